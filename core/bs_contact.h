@@ -1,0 +1,37 @@
+/* bs_contact.h - contact kinematics, Delassus operator and percussions. */
+#ifndef BS_CONTACT_H
+#define BS_CONTACT_H
+
+#include "beamslider.h"
+#include "bs_excitation.h"
+
+/* Configuration at which contacts are detected (the Moreau midpoint). */
+typedef struct bs_contact_frame {
+    const bs_real *q_beam;  /* modal coordinates */
+    bs_real x_kinematic;    /* x_C used for the contact points (x_pcs in the PCS model) [m] */
+    bs_real x_stops;        /* x_C checked against the clamp end stops [m] */
+    bs_real z;              /* z_C [m] */
+    bs_real beta;           /* [rad] */
+    int stops;              /* 1: clamp end stops take part */
+    bs_base base;           /* base motion */
+} bs_contact_frame;
+
+/* Finds the contacts with g_N < 0 and fills set->count, id, mu and the force
+ * directions W; base_term[a] receives w~ = dg/dt of active contact a. */
+void bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
+                       bs_contact_set *set, bs_real base_term[BS_MAX_CONTACTS][2]);
+
+/* Relative velocity gamma = W^T u + w~ of every active contact. */
+void bs_contact_velocity(const bs_scene *scene, const bs_contact_set *set,
+                         const bs_real *u_beam, const bs_real *u_slider,
+                         const bs_real base_term[BS_MAX_CONTACTS][2],
+                         bs_real gamma[2 * BS_MAX_CONTACTS]);
+
+/* Delassus operator G = W^T M^-1 W of the active contacts. */
+void bs_contact_delassus(const bs_scene *scene, bs_contact_set *set);
+
+/* u += M^-1 W P. */
+void bs_contact_apply(const bs_scene *scene, const bs_contact_set *set,
+                      bs_real *u_beam, bs_real *u_slider);
+
+#endif

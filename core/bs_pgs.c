@@ -1,0 +1,322 @@
+/* bs_pgs.c - bounded projected Gauss-Seidel with subspace minimisation for
+ * the per-step contact problem.
+ *
+ * Unknowns: percussions P = (P_N,1, P_T,1, ..., P_N,n, P_T,n) [N s].
+ * Velocities after the step (Newton-modified): xi = G P + c, G = W^T M^-1 W.
+ * Contact laws for each contact i (MODEL.md 4):
+ *   0 <= P_N  _|_  xi_N >= 0,   |P_T| <= mu P_N,   P_T = -mu P_N sign(xi_T) if xi_T != 0.
+ *
+ * Gauss-Seidel sweep: visit the contacts in order and solve contact i's 2x2
+ * problem exactly with the others frozen: with v = c_i + sum_{j != i} G_ij P_j
+ * and the block G_ii = [a b; b d] the candidates are
+ *   take-off   P = 0                                 if v_N >= 0
+ *   stick      G_ii P = -v                           if P_N >= 0, |P_T| <= mu P_N
+ *   slip s=+-1 P_T = -s mu P_N, P_N = -v_N / (a - s mu b)
+ *                                                    if s ((b - s mu d) P_N + v_T) >= 0
+ * which is the fixed point of the prox update the published model iterates,
+ *   P_i <- prox(P_i - r_i (G_i: P + c_i)),  r_i = 1 / max(a, d),
+ * reached in one visit instead of many. The prox update stays as a fall-back
+ * for a block where no candidate is consistent (only possible when mu |b| is
+ * comparable with a).
+ *
+ * Subspace step: two corners on the same face of the slot see almost the same
+ * beam motion, so their rows of G are nearly parallel and Gauss-Seidel crawls
+ * (hundreds of sweeps, MODEL.md 9.5). After each sweep that has not converged,
+ * the modes the sweep reached (take-off, stick, slip +-) define a linear
+ * system, rows per contact:
+ *   take-off   P_N = 0, P_T = 0
+ *   stick      xi_N = 0, xi_T = 0
+ *   slip s     xi_N = 0, P_T + s mu P_N = 0
+ * solved directly (Gaussian elimination, partial pivoting, 2n <= 12 unknowns);
+ * its solution replaces P when its residual is smaller. With the right modes
+ * that is the exact solution. (Projected Gauss-Seidel subspace minimisation:
+ * Silcowitz, Niebe, Erleben 2010.)
+ *
+ * Warm start: P comes in holding each contact's percussion of the last step.
+ * Stop: after each sweep the natural-map residual of the current P,
+ *   e = sum_i | P_i - prox(P_i - r_i xi_i) |,
+ * is computed; the solve stops when e <= tol_rel |P| + tol_abs (converged) or
+ * when max_sweeps sweeps are done. The residual returned is the one of the P
+ * returned, whether converged or not (MODEL.md 9.5: report it, never hide it).
+ */
+#include "bs_pgs.h"
+#include "bs_port.h"
+
+static bs_real clamp(bs_real value, bs_real low, bs_real high)
+{
+    return value < low ? low : (value > high ? high : value);
+}
+
+/* prox of the contact laws with step r: P_N first, then P_T in the new cone. */
+static void prox(bs_real mu, bs_real r, const bs_real *xi, const bs_real *p, bs_real *out)
+{
+    const bs_real p_n = p[0] - r * xi[0];
+    out[0] = p_n > BS_R(0.0) ? p_n : BS_R(0.0);
+    out[1] = clamp(p[1] - r * xi[1], -mu * out[0], mu * out[0]);
+}
+
+/* xi of contact a's rows with the current P. */
+static void velocity(const bs_contact_set *set, int a, bs_real *xi)
+{
+    const int rows = 2 * set->count;
+    const bs_real *g_n = set->delassus[2 * a];
+    const bs_real *g_t = set->delassus[2 * a + 1];
+    bs_real xi_n = set->free_velocity[2 * a];
+    bs_real xi_t = set->free_velocity[2 * a + 1];
+    int j;
+
+    for (j = 0; j < rows; ++j) {
+        xi_n += g_n[j] * set->percussion[j];
+        xi_t += g_t[j] * set->percussion[j];
+    }
+    xi[0] = xi_n;
+    xi[1] = xi_t;
+}
+
+static bs_real step_size(const bs_contact_set *set, int a)
+{
+    const bs_real a_nn = set->delassus[2 * a][2 * a];
+    const bs_real a_tt = set->delassus[2 * a + 1][2 * a + 1];
+    return BS_R(1.0) / (a_nn > a_tt ? a_nn : a_tt);
+}
+
+/* Exact solution of contact a's problem with the other contacts frozen. */
+static void solve_contact(bs_contact_set *set, int a)
+{
+    bs_real *p = &set->percussion[2 * a];
+    const bs_real mu = set->mu[a];
+    const bs_real g_nn = set->delassus[2 * a][2 * a];
+    const bs_real g_nt = set->delassus[2 * a][2 * a + 1];
+    const bs_real g_tt = set->delassus[2 * a + 1][2 * a + 1];
+    bs_real xi[2];
+    bs_real v_n, v_t, det, sign;
+    int attempt;
+
+    velocity(set, a, xi);
+    v_n = xi[0] - g_nn * p[0] - g_nt * p[1];
+    v_t = xi[1] - g_nt * p[0] - g_tt * p[1];
+
+    if (v_n >= BS_R(0.0)) { /* take-off */
+        p[0] = BS_R(0.0);
+        p[1] = BS_R(0.0);
+        return;
+    }
+    if (mu == BS_R(0.0)) { /* frictionless: normal only */
+        p[0] = -v_n / g_nn;
+        p[1] = BS_R(0.0);
+        return;
+    }
+    det = g_nn * g_tt - g_nt * g_nt;
+    if (det > BS_R(0.0)) {
+        const bs_real p_n = (g_nt * v_t - g_tt * v_n) / det;
+        const bs_real p_t = (g_nt * v_n - g_nn * v_t) / det;
+        if (p_n >= BS_R(0.0) && p_t <= mu * p_n && p_t >= -mu * p_n) { /* stick */
+            p[0] = p_n;
+            p[1] = p_t;
+            return;
+        }
+    }
+    /* slip: try first the direction the tangential velocity takes without friction */
+    sign = (g_nt * (-v_n / g_nn) + v_t) >= BS_R(0.0) ? BS_R(1.0) : BS_R(-1.0);
+    for (attempt = 0; attempt < 2; ++attempt, sign = -sign) {
+        const bs_real denominator = g_nn - sign * mu * g_nt;
+        if (denominator > BS_R(0.0)) {
+            const bs_real p_n = -v_n / denominator;
+            const bs_real xi_t = (g_nt - sign * mu * g_tt) * p_n + v_t;
+            if (sign * xi_t >= BS_R(0.0)) {
+                p[0] = p_n;
+                p[1] = -sign * mu * p_n;
+                return;
+            }
+        }
+    }
+    prox(mu, step_size(set, a), xi, p, p); /* fall-back, see the header comment */
+}
+
+bs_real bs_pgs_residual(const bs_contact_set *set, bs_real *norm)
+{
+    bs_real residual = BS_R(0.0);
+    bs_real norm_sq = BS_R(0.0);
+    int a;
+
+    for (a = 0; a < set->count; ++a) {
+        const bs_real *p = &set->percussion[2 * a];
+        bs_real xi[2];
+        bs_real projected[2];
+        bs_real e_n, e_t;
+        velocity(set, a, xi);
+        prox(set->mu[a], step_size(set, a), xi, p, projected);
+        e_n = p[0] - projected[0];
+        e_t = p[1] - projected[1];
+        residual += bs_sqrt(e_n * e_n + e_t * e_t);
+        norm_sq += p[0] * p[0] + p[1] * p[1];
+    }
+    *norm = bs_sqrt(norm_sq);
+    return residual;
+}
+
+enum { MODE_TAKEOFF, MODE_STICK, MODE_SLIP_POS, MODE_SLIP_NEG }; /* slip +: xi_T > 0, P_T = -mu P_N */
+
+/* Mode contact a shows at percussion p. */
+static int mode_of(bs_real mu, const bs_real *p)
+{
+    const bs_real limit = mu * p[0];
+    if (!(p[0] > BS_R(0.0)))
+        return MODE_TAKEOFF;
+    if (p[1] < limit && p[1] > -limit)
+        return MODE_STICK;
+    return p[1] > BS_R(0.0) ? MODE_SLIP_NEG : MODE_SLIP_POS;
+}
+
+/* Solves the linear system the modes define into trial. Returns 0, or -1
+ * when it is singular. */
+static int subspace_solve(const bs_contact_set *set, const int *mode, bs_real *trial)
+{
+    const int rows = 2 * set->count;
+    bs_real a[2 * BS_MAX_CONTACTS][2 * BS_MAX_CONTACTS + 1]; /* [A | b] */
+    int i, j, col;
+
+    for (i = 0; i < set->count; ++i) {
+        bs_real *row_n = a[2 * i];
+        bs_real *row_t = a[2 * i + 1];
+        for (j = 0; j <= rows; ++j) {
+            row_n[j] = BS_R(0.0);
+            row_t[j] = BS_R(0.0);
+        }
+        if (mode[i] == MODE_TAKEOFF) {
+            row_n[2 * i] = BS_R(1.0);
+            row_t[2 * i + 1] = BS_R(1.0);
+            continue;
+        }
+        for (j = 0; j < rows; ++j)
+            row_n[j] = set->delassus[2 * i][j];
+        row_n[rows] = -set->free_velocity[2 * i];
+        if (mode[i] == MODE_STICK) {
+            for (j = 0; j < rows; ++j)
+                row_t[j] = set->delassus[2 * i + 1][j];
+            row_t[rows] = -set->free_velocity[2 * i + 1];
+        } else {
+            row_t[2 * i + 1] = BS_R(1.0);
+            row_t[2 * i] = mode[i] == MODE_SLIP_POS ? set->mu[i] : -set->mu[i];
+        }
+    }
+    for (col = 0; col < rows; ++col) {
+        int pivot = col;
+        for (i = col + 1; i < rows; ++i)
+            if ((a[i][col] < BS_R(0.0) ? -a[i][col] : a[i][col])
+                > (a[pivot][col] < BS_R(0.0) ? -a[pivot][col] : a[pivot][col]))
+                pivot = i;
+        if (a[pivot][col] == BS_R(0.0))
+            return -1;
+        if (pivot != col)
+            for (j = col; j <= rows; ++j) {
+                const bs_real swap = a[col][j];
+                a[col][j] = a[pivot][j];
+                a[pivot][j] = swap;
+            }
+        for (i = col + 1; i < rows; ++i) {
+            const bs_real factor = a[i][col] / a[col][col];
+            for (j = col; j <= rows; ++j)
+                a[i][j] -= factor * a[col][j];
+        }
+    }
+    for (i = rows - 1; i >= 0; --i) {
+        bs_real value = a[i][rows];
+        for (j = i + 1; j < rows; ++j)
+            value -= a[i][j] * trial[j];
+        trial[i] = value / a[i][i];
+    }
+    return 0;
+}
+
+/* Moves the first contact whose trial solution breaks its law to the mode
+ * the breach points to (one contact at a time, Murty's least-index rule:
+ * moving every breaching contact at once can cycle). Returns 1 if a contact
+ * moved, 0 if the trial obeys every law. */
+static int correct_modes(const bs_contact_set *set, int *mode)
+{
+    int a;
+
+    for (a = 0; a < set->count; ++a) {
+        const bs_real *p = &set->percussion[2 * a];
+        const bs_real limit = set->mu[a] * p[0];
+        bs_real xi[2];
+        int next = mode[a];
+        velocity(set, a, xi);
+        /* a stick breach first: a nearly singular stick pair gives wild P_T
+         * and P_N of either sign, and only the slip row tames P_T */
+        if (mode[a] == MODE_TAKEOFF)
+            next = xi[0] < BS_R(0.0) ? MODE_STICK : MODE_TAKEOFF;
+        else if (mode[a] == MODE_STICK && (p[1] > limit || p[1] < -limit))
+            next = p[1] > BS_R(0.0) ? MODE_SLIP_NEG : MODE_SLIP_POS;
+        else if (p[0] < BS_R(0.0))
+            next = MODE_TAKEOFF;
+        else if (mode[a] == MODE_SLIP_POS ? xi[1] < BS_R(0.0) : xi[1] > BS_R(0.0))
+            next = MODE_STICK;
+        if (next != mode[a]) {
+            mode[a] = next;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+#define SUBSPACE_TRIES 8 /* mode corrections per subspace step */
+
+/* Subspace step: a few rounds of "solve the modes' linear system, move the
+ * contacts whose law it breaks". Keeps the best P seen (smallest residual). */
+static void try_subspace(bs_contact_set *set, bs_real *residual, bs_real *norm)
+{
+    const int rows = 2 * set->count;
+    bs_real best[2 * BS_MAX_CONTACTS];
+    bs_real trial[2 * BS_MAX_CONTACTS];
+    int mode[BS_MAX_CONTACTS];
+    int improved = 0;
+    int try_count, j;
+
+    for (j = 0; j < rows; ++j)
+        best[j] = set->percussion[j];
+    for (j = 0; j < set->count; ++j)
+        mode[j] = mode_of(set->mu[j], &set->percussion[2 * j]);
+    for (try_count = 0; try_count < SUBSPACE_TRIES; ++try_count) {
+        bs_real trial_residual, trial_norm;
+        if (subspace_solve(set, mode, trial) != 0)
+            break;
+        for (j = 0; j < rows; ++j)
+            set->percussion[j] = trial[j];
+        trial_residual = bs_pgs_residual(set, &trial_norm);
+        if (trial_residual < *residual) {
+            *residual = trial_residual;
+            *norm = trial_norm;
+            for (j = 0; j < rows; ++j)
+                best[j] = trial[j];
+            improved = 1;
+        }
+        if (correct_modes(set, mode) == 0)
+            break;
+    }
+    (void)improved;
+    for (j = 0; j < rows; ++j)
+        set->percussion[j] = best[j];
+}
+
+bs_pgs_result bs_pgs_solve(bs_contact_set *set, int max_sweeps, bs_real tol_rel, bs_real tol_abs)
+{
+    bs_pgs_result result;
+    bs_real norm = BS_R(0.0);
+    int a;
+
+    result.sweeps = 0;
+    do { /* at least one sweep: the warm start is not trusted unchecked */
+        for (a = 0; a < set->count; ++a)
+            solve_contact(set, a);
+        ++result.sweeps;
+        result.residual = bs_pgs_residual(set, &norm);
+        result.converged = result.residual <= tol_rel * norm + tol_abs;
+        if (!result.converged && set->count > 1) {
+            try_subspace(set, &result.residual, &norm);
+            result.converged = result.residual <= tol_rel * norm + tol_abs;
+        }
+    } while (!result.converged && result.sweeps < max_sweeps);
+    return result;
+}

@@ -1,0 +1,127 @@
+/* bs_scene.c - validation of a scene before the core uses it.
+ *
+ * The host validates physical parameters with file and line (host/scene_ini.c);
+ * this is the core's own guard, for scenes that come from anywhere (a
+ * generated header, a corrupted flash page, a caller's struct).
+ */
+#include "beamslider.h"
+
+/* NaN and infinity give x - x != 0; no libm needed. */
+static int is_finite(bs_real x)
+{
+    return x - x == BS_R(0.0);
+}
+
+static int fail(const char **field, const char *name)
+{
+    if (field)
+        *field = name;
+    return 1;
+}
+
+static int check_modes(const bs_scene *s, const char **field)
+{
+    int i;
+    int j;
+    int c;
+
+    if (s->n_modes < 0 || s->n_modes > BS_MAX_MODES)
+        return fail(field, "n_modes");
+    if (s->shape_pieces < 1 || s->shape_pieces > BS_SHAPE_MAX_PIECES)
+        return fail(field, "shape_pieces");
+    for (i = 0; i < s->n_modes; ++i) {
+        if (!is_finite(s->omega_sq[i]) || !(s->omega_sq[i] > BS_R(0.0)))
+            return fail(field, "omega_sq");
+        if (!is_finite(s->damping[i]) || !(s->damping[i] >= BS_R(0.0)))
+            return fail(field, "damping");
+        if (!is_finite(s->gamma[i]))
+            return fail(field, "gamma");
+        if (!is_finite(s->phi_sensor[i]))
+            return fail(field, "phi_sensor");
+        for (j = 0; j < s->n_modes; ++j)
+            if (!is_finite(s->stretch[i][j]) || s->stretch[i][j] != s->stretch[j][i])
+                return fail(field, "stretch");
+        for (j = 0; j < s->shape_pieces; ++j)
+            for (c = 0; c < BS_SHAPE_COEFS; ++c)
+                if (!is_finite(s->shape_coef[j][i][c]))
+                    return fail(field, "shape_coef");
+    }
+    if (!is_finite(s->stretch_norm) || !(s->stretch_norm >= BS_R(0.0)))
+        return fail(field, "stretch_norm");
+    return 0;
+}
+
+static int check_geometry(const bs_scene *s, const char **field)
+{
+    int i;
+
+    if (!is_finite(s->length) || !(s->length > BS_R(0.0)))
+        return fail(field, "length");
+    if (!is_finite(s->half_thickness) || !(s->half_thickness > BS_R(0.0)))
+        return fail(field, "half_thickness");
+    for (i = 0; i < BS_CORNERS; ++i)
+        if (!is_finite(s->corner[i][0]) || !is_finite(s->corner[i][1]))
+            return fail(field, "corner");
+    /* the slot (P1 above P2, P4 above P3, left of P3/P4) must hold the beam */
+    if (!(s->corner[0][1] - s->corner[1][1] >= BS_R(2.0) * s->half_thickness)
+        || !(s->corner[3][1] - s->corner[2][1] >= BS_R(2.0) * s->half_thickness)
+        || !(s->corner[0][0] < s->corner[3][0]) || !(s->corner[1][0] < s->corner[2][0]))
+        return fail(field, "corner");
+    if (!is_finite(s->com_offset))
+        return fail(field, "com_offset");
+    if (!(s->stop_min >= BS_R(0.0) && s->stop_min < s->stop_max && s->stop_max <= s->length))
+        return fail(field, "stop_min/stop_max");
+    return 0;
+}
+
+static int check_slider_contact(const bs_scene *s, const char **field)
+{
+    if (!is_finite(s->mass_inv) || !(s->mass_inv > BS_R(0.0)))
+        return fail(field, "mass_inv");
+    if (!is_finite(s->inertia_inv) || !(s->inertia_inv > BS_R(0.0)))
+        return fail(field, "inertia_inv");
+    if (!is_finite(s->gravity[0]) || !is_finite(s->gravity[1]))
+        return fail(field, "gravity");
+    if (!is_finite(s->mu) || !(s->mu >= BS_R(0.0)))
+        return fail(field, "mu");
+    if (!(s->e_n >= BS_R(0.0) && s->e_n <= BS_R(1.0)))
+        return fail(field, "e_n");
+    return 0;
+}
+
+static int check_numerics(const bs_scene *s, const char **field)
+{
+    if (!is_finite(s->base_accel) || !is_finite(s->base_velocity)
+        || !is_finite(s->base_displacement))
+        return fail(field, "base_accel/base_velocity/base_displacement");
+    /* at least two steps per excitation period: f_ex dt < 1/2 */
+    if (s->phase_step_half == 0 || s->phase_step_half >= ((uint64_t)1 << 62))
+        return fail(field, "phase_step_half");
+    if (!is_finite(s->dt) || !(s->dt > BS_R(0.0)))
+        return fail(field, "dt");
+    if (s->pgs_max_sweeps < 1)
+        return fail(field, "pgs_max_sweeps");
+    if (!is_finite(s->pgs_tol_rel) || !(s->pgs_tol_rel >= BS_R(0.0)))
+        return fail(field, "pgs_tol_rel");
+    if (!is_finite(s->pgs_tol_abs) || !(s->pgs_tol_abs >= BS_R(0.0)))
+        return fail(field, "pgs_tol_abs");
+    return 0;
+}
+
+bs_status bs_scene_check(const bs_scene *scene, const char **field)
+{
+    int i;
+
+    if (!scene)
+        return BS_E_NULL;
+    if (check_modes(scene, field) || check_geometry(scene, field)
+        || check_slider_contact(scene, field) || check_numerics(scene, field))
+        return BS_E_SCENE;
+    /* explicit stability limit of the smooth part: omega_max dt < 2 */
+    for (i = 0; i < scene->n_modes; ++i)
+        if (!(scene->omega_sq[i] * scene->dt * scene->dt < BS_R(4.0))) {
+            fail(field, "dt");
+            return BS_E_UNSTABLE;
+        }
+    return BS_OK;
+}

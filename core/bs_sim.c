@@ -1,0 +1,282 @@
+/* bs_sim.c - Moreau midpoint time-stepping of the beam-slider system.
+ *
+ * Coordinates q = (q_1..q_N, x_C, z_C, beta), M = diag(1..1, m, m, J_C),
+ * smooth forces h = (-gamma w0'' - omega^2 q_b - 2 D omega u_b - N(q_b); m g_x; m g_z; 0).
+ * One step from (t_B, q_B, u_B) with fixed dt (MODEL.md 5):
+ *   1. t_M = t_B + dt/2,  q_M = q_B + dt/2 u_B,  h_M = h(t_M, q_M, u_B)
+ *   2. u_free = u_B + M^-1 h_M dt
+ *   3. contacts with g_N(q_M) < 0:  c = W^T u_free + w~ + diag(e_N, 0) (W^T u_B + w~),
+ *      G = W^T M^-1 W;  solve xi = G P + c under the contact laws (bs_pgs.c)
+ *   4. u_E = u_free + M^-1 W P,  q_E = q_M + dt/2 u_E,  t_E = t_B + dt
+ * The smooth part is explicit (leapfrog): stable while omega_max dt < 2, with
+ * omega_max including the cubic stiffening (checked every step).
+ *
+ * PCS model (MODEL.md 6): the contact kinematics use x_pcs instead of x_C;
+ * x_C stays a free coordinate whose drift is the transport velocity. The clamp
+ * stops act only in the free model.
+ *
+ * x_C moves by a few ulps of float per step; it is accumulated as an unevaluated
+ * sum x_C + x_c_low (Knuth's TwoSum) so that float rounding does not bias the
+ * slow drift (MODEL.md 9.2).
+ */
+#include "beamslider.h"
+#include "bs_beam.h"
+#include "bs_contact.h"
+#include "bs_excitation.h"
+#include "bs_pgs.h"
+
+/* sum + low += increment, exactly up to the rounding of the new low part. */
+static void add_compensated(bs_real *sum, bs_real *low, bs_real increment)
+{
+    const bs_real b = increment + *low;
+    const bs_real s = *sum + b;
+    const bs_real b_virtual = s - *sum;
+    *low = (*sum - (s - b_virtual)) + (b - b_virtual);
+    *sum = s;
+}
+
+bs_status bs_sim_init(bs_sim *sim, const bs_scene *scene, bs_model model, bs_real s0)
+{
+    bs_status status;
+    int i;
+
+    if (!sim || !scene)
+        return BS_E_NULL;
+    status = bs_scene_check(scene, 0);
+    if (status != BS_OK)
+        return status;
+    if (model != BS_MODEL_FREE && model != BS_MODEL_PCS)
+        return BS_E_ARGUMENT;
+    if (model == BS_MODEL_FREE
+            ? !(s0 * scene->length >= scene->stop_min && s0 * scene->length <= scene->stop_max)
+            : !(s0 >= BS_R(0.0) && s0 <= BS_R(1.0)))
+        return BS_E_ARGUMENT;
+
+    sim->scene = scene;
+    sim->model = model;
+    sim->x_pcs = s0 * scene->length;
+    sim->step = 0;
+    sim->phase = 0;
+    sim->omega_sq_max = BS_R(0.0);
+    for (i = 0; i < BS_MAX_MODES; ++i) {
+        sim->q_beam[i] = BS_R(0.0);
+        sim->u_beam[i] = BS_R(0.0);
+        if (i < scene->n_modes && scene->omega_sq[i] > sim->omega_sq_max)
+            sim->omega_sq_max = scene->omega_sq[i];
+    }
+    /* slot centred on the beam axis, which sits at w0(0) */
+    sim->slider[0] = s0 * scene->length;
+    sim->slider[1] = -scene->com_offset + scene->base_displacement;
+    sim->slider[2] = BS_R(0.0);
+    for (i = 0; i < 3; ++i)
+        sim->slider_velocity[i] = BS_R(0.0);
+    sim->x_c_low = BS_R(0.0);
+    for (i = 0; i < BS_MAX_CONTACTS; ++i) {
+        sim->percussion[i][0] = BS_R(0.0);
+        sim->percussion[i][1] = BS_R(0.0);
+    }
+    sim->report.active = 0;
+    sim->report.sweeps = 0;
+    sim->report.residual = BS_R(0.0);
+    sim->report.converged = 1;
+    sim->contacts.count = 0;
+    return BS_OK;
+}
+
+bs_status bs_sim_set_pcs_position(bs_sim *sim, bs_real s)
+{
+    if (!sim)
+        return BS_E_NULL;
+    if (sim->model != BS_MODEL_PCS || !(s >= BS_R(0.0) && s <= BS_R(1.0)))
+        return BS_E_ARGUMENT;
+    sim->x_pcs = s * sim->scene->length;
+    return BS_OK;
+}
+
+/* Contact solve of step 3; updates u_beam, u_slider (free velocities on entry). */
+static void solve_contacts(bs_sim *sim, const bs_real base_term[BS_MAX_CONTACTS][2],
+                           bs_real *u_beam, bs_real *u_slider)
+{
+    const bs_scene *scene = sim->scene;
+    bs_contact_set *set = &sim->contacts;
+    bs_real gamma_before[2 * BS_MAX_CONTACTS];
+    bs_pgs_result result;
+    int a;
+
+    bs_contact_velocity(scene, set, sim->u_beam, sim->slider_velocity, base_term, gamma_before);
+    bs_contact_velocity(scene, set, u_beam, u_slider, base_term, set->free_velocity);
+    for (a = 0; a < set->count; ++a) {
+        set->free_velocity[2 * a] += scene->e_n * gamma_before[2 * a];
+        set->percussion[2 * a] = sim->percussion[set->id[a]][0];     /* warm start */
+        set->percussion[2 * a + 1] = sim->percussion[set->id[a]][1];
+    }
+    bs_contact_delassus(scene, set);
+    result = bs_pgs_solve(set, scene->pgs_max_sweeps, scene->pgs_tol_rel, scene->pgs_tol_abs);
+    bs_contact_apply(scene, set, u_beam, u_slider);
+    sim->report.sweeps = result.sweeps;
+    sim->report.residual = result.residual;
+    sim->report.converged = result.converged;
+}
+
+bs_status bs_sim_step(bs_sim *sim)
+{
+    const bs_scene *scene;
+    bs_real dt, half;
+    bs_real q_mid[BS_MAX_MODES];
+    bs_real force[BS_MAX_MODES];
+    bs_real u_beam[BS_MAX_MODES];
+    bs_real slider_mid[3];
+    bs_real u_slider[3];
+    bs_real base_term[BS_MAX_CONTACTS][2];
+    bs_real x_new, x_low_new, check;
+    bs_contact_frame frame;
+    unsigned active = 0;
+    int n, k, a;
+
+    if (!sim || !sim->scene)
+        return BS_E_NULL;
+    scene = sim->scene;
+    n = scene->n_modes;
+    dt = scene->dt;
+    half = BS_R(0.5) * dt;
+
+    /* 1. midpoint */
+    frame.base = bs_excitation_at(scene, sim->phase + scene->phase_step_half);
+    for (k = 0; k < n; ++k)
+        q_mid[k] = sim->q_beam[k] + half * sim->u_beam[k];
+    for (k = 0; k < 3; ++k)
+        slider_mid[k] = sim->slider[k] + half * sim->slider_velocity[k];
+    if (!((sim->omega_sq_max + bs_beam_force(scene, q_mid, sim->u_beam, frame.base.acceleration, force))
+              * dt * dt < BS_R(4.0)))
+        return BS_E_UNSTABLE;
+
+    /* 2. smooth velocity update */
+    for (k = 0; k < n; ++k)
+        u_beam[k] = sim->u_beam[k] + dt * force[k];
+    u_slider[0] = sim->slider_velocity[0] + dt * scene->gravity[0];
+    u_slider[1] = sim->slider_velocity[1] + dt * scene->gravity[1];
+    u_slider[2] = sim->slider_velocity[2];
+
+    /* 3. contacts at the midpoint */
+    frame.q_beam = q_mid;
+    frame.x_kinematic = sim->model == BS_MODEL_PCS ? sim->x_pcs : slider_mid[0];
+    frame.x_stops = slider_mid[0];
+    frame.z = slider_mid[1];
+    frame.beta = slider_mid[2];
+    frame.stops = sim->model == BS_MODEL_FREE;
+    bs_contact_detect(scene, &frame, &sim->contacts, base_term);
+    sim->report.sweeps = 0;
+    sim->report.residual = BS_R(0.0);
+    sim->report.converged = 1;
+    if (sim->contacts.count > 0)
+        solve_contacts(sim, base_term, u_beam, u_slider);
+
+    /* 4. end of step; nothing is committed unless every value is finite */
+    check = BS_R(0.0);
+    for (k = 0; k < n; ++k) {
+        q_mid[k] += half * u_beam[k];
+        check += q_mid[k] + u_beam[k];
+    }
+    x_new = sim->slider[0];
+    x_low_new = sim->x_c_low;
+    add_compensated(&x_new, &x_low_new, half * (sim->slider_velocity[0] + u_slider[0]));
+    slider_mid[1] += half * u_slider[1];
+    slider_mid[2] += half * u_slider[2];
+    check += x_new + slider_mid[1] + slider_mid[2] + u_slider[0] + u_slider[1] + u_slider[2];
+    if (check - check != BS_R(0.0))
+        return BS_E_NONFINITE;
+
+    for (k = 0; k < n; ++k) {
+        sim->q_beam[k] = q_mid[k];
+        sim->u_beam[k] = u_beam[k];
+    }
+    sim->slider[0] = x_new;
+    sim->x_c_low = x_low_new;
+    sim->slider[1] = slider_mid[1];
+    sim->slider[2] = slider_mid[2];
+    for (k = 0; k < 3; ++k)
+        sim->slider_velocity[k] = u_slider[k];
+    for (k = 0; k < BS_MAX_CONTACTS; ++k) {
+        sim->percussion[k][0] = BS_R(0.0);
+        sim->percussion[k][1] = BS_R(0.0);
+    }
+    for (a = 0; a < sim->contacts.count; ++a) {
+        const int id = sim->contacts.id[a];
+        active |= 1u << id;
+        sim->percussion[id][0] = sim->contacts.percussion[2 * a];
+        sim->percussion[id][1] = sim->contacts.percussion[2 * a + 1];
+    }
+    sim->report.active = active;
+    sim->step += 1;
+    sim->phase += 2 * scene->phase_step_half;
+    return BS_OK;
+}
+
+const bs_step_report *bs_sim_report(const bs_sim *sim)
+{
+    return &sim->report;
+}
+
+bs_real bs_sim_sensor(const bs_sim *sim)
+{
+    bs_real w = BS_R(0.0);
+    int k;
+    for (k = 0; k < sim->scene->n_modes; ++k)
+        w += sim->scene->phi_sensor[k] * sim->q_beam[k];
+    return w;
+}
+
+bs_real bs_sim_position(const bs_sim *sim)
+{
+    return (sim->slider[0] + sim->x_c_low) / sim->scene->length;
+}
+
+void bs_sim_slider(const bs_sim *sim, bs_real *z_c, bs_real *beta)
+{
+    *z_c = sim->slider[1];
+    *beta = sim->slider[2];
+}
+
+bs_real bs_sim_phase(const bs_sim *sim)
+{
+    return (bs_real)(uint32_t)(sim->phase >> 40) * BS_R(5.9604644775390625e-08); /* 2^-24 */
+}
+
+static uint32_t hash_bytes(uint32_t hash, const void *data, unsigned long size)
+{
+    const unsigned char *byte = (const unsigned char *)data;
+    unsigned long i;
+    for (i = 0; i < size; ++i) {
+        hash ^= byte[i];
+        hash *= 16777619u;
+    }
+    return hash;
+}
+
+uint32_t bs_sim_hash(const bs_sim *sim)
+{
+    const int n = sim->scene->n_modes;
+    uint32_t hash = 2166136261u;
+    hash = hash_bytes(hash, &sim->step, sizeof sim->step);
+    hash = hash_bytes(hash, &sim->phase, sizeof sim->phase);
+    hash = hash_bytes(hash, sim->q_beam, (unsigned long)n * sizeof(bs_real));
+    hash = hash_bytes(hash, sim->u_beam, (unsigned long)n * sizeof(bs_real));
+    hash = hash_bytes(hash, sim->slider, sizeof sim->slider);
+    hash = hash_bytes(hash, sim->slider_velocity, sizeof sim->slider_velocity);
+    hash = hash_bytes(hash, &sim->x_c_low, sizeof sim->x_c_low);
+    hash = hash_bytes(hash, sim->percussion, sizeof sim->percussion);
+    return hash;
+}
+
+const char *bs_status_text(bs_status status)
+{
+    switch (status) {
+    case BS_OK: return "ok";
+    case BS_E_NULL: return "null pointer";
+    case BS_E_SCENE: return "scene field out of range";
+    case BS_E_ARGUMENT: return "argument out of range";
+    case BS_E_UNSTABLE: return "explicit stability limit omega_max*dt < 2 violated";
+    case BS_E_NONFINITE: return "state became NaN or infinite";
+    }
+    return "unknown status";
+}

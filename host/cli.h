@@ -1,0 +1,15 @@
+/* cli.h - the beamslider command line: one function per subcommand. */
+#ifndef CLI_H
+#define CLI_H
+
+/* Exit codes: 0 success, 1 the work failed (run diverged, output not
+ * written), 2 bad usage or bad input. */
+enum { CLI_OK = 0, CLI_FAILED = 1, CLI_USAGE = 2 };
+
+int cli_modes(int argc, char **argv);
+int cli_run(int argc, char **argv);
+
+/* Prints "beamslider: error: ..." to stderr. */
+void cli_error(const char *format, ...);
+
+#endif

@@ -1,0 +1,36 @@
+/* cli_modes.c - `beamslider modes SCENE`: the modal data the core runs on. */
+#include <stdio.h>
+#include "cli.h"
+#include "scene_build.h"
+
+int cli_modes(int argc, char **argv)
+{
+    static scene_file file;   /* static: large */
+    static bs_scene scene;
+    static scene_model model;
+    char err[1024];
+    int k;
+
+    if (argc != 1) {
+        cli_error("modes takes exactly one scene file");
+        return CLI_USAGE;
+    }
+    if (scene_read(argv[0], &file, &scene, &model, err, sizeof err) != 0) {
+        cli_error("%s", err);
+        return CLI_USAGE;
+    }
+    printf("# scene %s (%s): %d modes, kappa = k_r L/EI = %.6g, b = %.6g mm, k_ax = %.6g N/m\n",
+           file.params.name, argv[0], model.modes.n, model.kappa, 1e3 * model.width,
+           model.modes.k_axial_total);
+    printf("# mode shapes: %d polynomial pieces of degree %d, relative error %.2g (phi), %.2g (slope)\n",
+           model.fit.pieces, BS_SHAPE_COEFS - 1, model.fit.error_phi, model.fit.error_slope);
+    printf("%-4s %14s %14s %14s %16s\n", "mode", "f_k[Hz]", "lambda_k", "gamma_k", "phi_k(4/7)");
+    for (k = 0; k < model.modes.n; ++k) {
+        double phi, slope;
+        modal_shape(&model.modes, k, 4.0 / 7.0, &phi, &slope);
+        printf("%-4d %14.6f %14.9f %14.8f %16.8f\n", k + 1,
+               model.modes.omega[k] / (2.0 * 3.14159265358979323846), model.modes.lambda[k],
+               model.modes.gamma[k], phi);
+    }
+    return CLI_OK;
+}

@@ -1,0 +1,134 @@
+/* cli_run.c - `beamslider run SCENE [options]`: one simulation, CSV and a
+ * one-line JSON summary on stdout. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cli.h"
+#include "run.h"
+#include "scene_build.h"
+
+typedef struct run_cli {
+    const char *scene_path;
+    const char *out_path;
+    long every;
+} run_cli;
+
+/* Options that override a scene field: option name -> [section] key. */
+static const struct override {
+    const char *option, *section, *key;
+} overrides[] = {
+    { "--model", "run", "model" },
+    { "--s0", "run", "s0" },
+    { "--t-end", "run", "t_end" },
+    { "--dt", "numerics", "dt" },
+    { "--pgs-iters", "numerics", "pgs_max_sweeps" },
+    { 0, 0, 0 }
+};
+
+static int parse_options(int argc, char **argv, run_cli *cli, scene_file *file)
+{
+    char err[1024];
+    int i;
+
+    if (argc < 1 || argv[0][0] == '-') {
+        cli_error("run needs a scene file first: beamslider run SCENE.ini [options]");
+        return -1;
+    }
+    cli->scene_path = argv[0];
+    cli->out_path = NULL;
+    cli->every = 1;
+    if (scene_load(cli->scene_path, file, err, sizeof err) != 0) {
+        cli_error("%s", err);
+        return -1;
+    }
+    for (i = 1; i < argc; i += 2) {
+        const char *option = argv[i];
+        const struct override *o;
+        if (i + 1 >= argc) {
+            cli_error("option %s needs a value", option);
+            return -1;
+        }
+        for (o = overrides; o->option && strcmp(o->option, option); ++o)
+            ;
+        if (o->option) {
+            if (scene_set(file, o->section, o->key, argv[i + 1], option, err, sizeof err) != 0) {
+                cli_error("%s", err);
+                return -1;
+            }
+        } else if (!strcmp(option, "--out")) {
+            cli->out_path = argv[i + 1];
+        } else if (!strcmp(option, "--every")) {
+            char *end;
+            errno = 0;
+            cli->every = strtol(argv[i + 1], &end, 10);
+            if (*end || errno || cli->every < 1) {
+                cli_error("--every %s: allowed: an integer >= 1", argv[i + 1]);
+                return -1;
+            }
+        } else {
+            cli_error("unknown option '%s' (see beamslider --help)", option);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+static void print_summary(const scene_file *file, const bs_scene *scene, const run_result *r)
+{
+    const scene_params *p = &file->params;
+    printf("{\"scene\":\"%s\",\"model\":\"%s\",\"precision\":\"%s\",\"modes\":%d,\"dt\":%g,"
+           "\"status\":\"%s\",\"t_end\":%.9g,\"steps\":%llu,\"s0\":%.9g,\"s_final\":%.9g,"
+           "\"s_min\":%.9g,\"t_s_min\":%.6f,\"amp_final_h\":%.6g,\"amp_periods\":%d,"
+           "\"wall_s\":%.4g,\"steps_per_s\":%.4g,\"max_pgs_iters\":%d,\"unconverged_steps\":%llu,"
+           "\"contact_steps\":%llu,\"mean_pgs_iters\":%.4g,\"hash\":\"%08x\"}\n",
+           p->name, p->model == BS_MODEL_PCS ? "pcs" : "free", BS_REAL_NAME, scene->n_modes, p->dt,
+           r->write_failed ? "write error" : bs_status_text(r->status), r->t, (unsigned long long)r->steps,
+           p->s0, r->s_final, r->s_min, r->t_s_min, r->amp_final_h, r->amp_periods, r->wall_s,
+           r->wall_s > 0.0 ? (double)r->steps / r->wall_s : 0.0, r->max_pgs_sweeps,
+           (unsigned long long)r->unconverged_steps, (unsigned long long)r->contact_steps,
+           r->contact_steps ? (double)r->total_sweeps / (double)r->contact_steps : 0.0, r->hash);
+}
+
+int cli_run(int argc, char **argv)
+{
+    static scene_file file;   /* static: large */
+    static bs_scene scene;
+    static scene_model model;
+    run_cli cli;
+    run_options options;
+    run_result result;
+    char err[1024];
+    FILE *csv = NULL;
+    int failed;
+
+    if (parse_options(argc, argv, &cli, &file) != 0)
+        return CLI_USAGE;
+    if (scene_build(&file, &scene, &model, err, sizeof err) != 0) {
+        cli_error("%s", err);
+        return CLI_USAGE;
+    }
+    if (cli.out_path) { /* opened only once the input is known to be good */
+        csv = fopen(cli.out_path, "w");
+        if (!csv) {
+            cli_error("cannot open %s for writing: %s", cli.out_path, strerror(errno));
+            return CLI_FAILED;
+        }
+    }
+    options.model = (bs_model)file.params.model;
+    options.s0 = file.params.s0;
+    options.t_end = file.params.t_end;
+    options.every = cli.every;
+    options.csv = csv;
+    options.show_progress = 1;
+    failed = run_scene(&scene, &options, &result) != 0;
+    if (csv && fclose(csv) != 0)
+        result.write_failed = failed = 1;
+    if (result.write_failed)
+        cli_error("writing %s failed: %s; the file is incomplete", cli.out_path, strerror(errno));
+    else if (result.status != BS_OK)
+        cli_error("%s: stopped at t = %.6f s (step %llu): %s; state and CSV kept up to the last good step",
+                  file.params.name, result.t, (unsigned long long)result.steps, bs_status_text(result.status));
+    print_summary(&file, &scene, &result);
+    return failed ? CLI_FAILED : CLI_OK;
+}

@@ -1,0 +1,44 @@
+/* run.h - one free or PCS run of a scene, with CSV output and summary. */
+#ifndef RUN_H
+#define RUN_H
+
+#include <stdint.h>
+#include <stdio.h>
+#include "beamslider.h"
+
+#define RUN_AMP_PERIODS 25 /* amplitude: mean over the last 25 excitation periods */
+
+typedef struct run_options {
+    bs_model model;
+    double s0;           /* start position (PCS: prescribed position) */
+    double t_end;        /* [s] */
+    long every;          /* CSV row every this many steps */
+    FILE *csv;           /* NULL: no CSV */
+    int show_progress;   /* progress bar on a terminal */
+} run_options;
+
+typedef struct run_result {
+    bs_status status;          /* BS_OK, or why the run stopped */
+    int write_failed;          /* the CSV could not be written */
+    uint64_t steps;            /* steps completed */
+    double t;                  /* simulated time reached [s] */
+    double s_final;
+    double s_min, t_s_min;     /* turning point toward the clamp */
+    double amp_final_h;        /* mean half peak-to-peak of w(4L/7) / h, last RUN_AMP_PERIODS periods */
+    int amp_periods;           /* periods behind amp_final_h */
+    double wall_s;
+    int max_pgs_sweeps;
+    uint64_t unconverged_steps;
+    uint64_t contact_steps;    /* steps with at least one active contact */
+    uint64_t total_sweeps;     /* over contact steps */
+    uint32_t hash;             /* bs_sim_hash of the final state */
+} run_result;
+
+/* Runs scene from rest for round(t_end / dt) steps. Returns 0 when the run
+ * completed and its CSV was written, -1 otherwise (result says why). */
+int run_scene(const bs_scene *scene, const run_options *options, run_result *result);
+
+/* CSV header line of run_scene's rows. */
+extern const char run_csv_header[];
+
+#endif

@@ -1,0 +1,73 @@
+/* scene_fields.c - every field a scene file may hold, with unit and range.
+ * The INI reader, the error messages and the docs' field list all come from
+ * this one table. */
+#include "scene_params.h"
+
+#include <math.h>
+#include <stdio.h>
+
+#define REAL(section, key, member, low, high, low_open, high_open, unit, meaning) \
+    { section, key, FIELD_REAL, offsetof(scene_params, member), low, high, low_open, high_open, unit, meaning }
+#define INT(section, key, member, low, high, unit, meaning) \
+    { section, key, FIELD_INT, offsetof(scene_params, member), low, high, 0, 0, unit, meaning }
+
+const field_spec scene_fields[] = {
+    { "scene", "name", FIELD_TEXT, offsetof(scene_params, name), 0, 0, 0, 0, "", "scene name" },
+    { "scene", "description", FIELD_TEXT, offsetof(scene_params, description), 0, 0, 0, 0, "", "one line on what the scene shows" },
+    REAL("beam", "length", beam.length, 0, INFINITY, 1, 1, "m", "free length L between the clamps"),
+    REAL("beam", "thickness", beam.thickness, 0, INFINITY, 1, 1, "m", "thickness h"),
+    REAL("beam", "density", beam.density, 0, INFINITY, 1, 1, "kg/m^3", "density rho"),
+    REAL("beam", "youngs_modulus", beam.youngs_modulus, 0, INFINITY, 1, 1, "Pa", "Young's modulus E"),
+    REAL("beam", "mass", beam.mass, 0, INFINITY, 1, 1, "kg", "mass rho A L of the free length (sets the width)"),
+    REAL("beam", "damping_ratio", damping_ratio, 0, 1, 0, 1, "", "modal damping ratio D of every mode"),
+    REAL("clamps", "rotational_stiffness", beam.k_rot, 0, INFINITY, 1, 1, "N m/rad", "rotational spring k_r at each end"),
+    REAL("clamps", "axial_stiffness", beam.k_axial, 0, INFINITY, 1, 1, "N/m", "axial stiffness k_t of the clamps"),
+    REAL("slider", "mass", slider_mass, 0, INFINITY, 1, 1, "kg", "slider mass m"),
+    REAL("slider", "inertia", slider_inertia, 0, INFINITY, 1, 1, "kg m^2", "rotary inertia J_C about the centre of mass"),
+    REAL("slider", "slot_width", slot_width, 0, INFINITY, 1, 1, "m", "distance B between the slot's contact corners"),
+    REAL("slider", "com_offset", com_offset, -INFINITY, INFINITY, 1, 1, "m", "distance d of the centre of mass below the slot centre"),
+    REAL("slider", "play_ratio", play_ratio, 1, INFINITY, 0, 1, "", "slot height over beam thickness r_h = R/h"),
+    REAL("contact", "friction", mu, 0, INFINITY, 0, 1, "", "Coulomb friction coefficient mu"),
+    REAL("contact", "restitution", e_n, 0, 1, 0, 0, "", "Newton normal restitution e_N"),
+    REAL("environment", "gravity", gravity, 0, INFINITY, 0, 1, "m/s^2", "acceleration of gravity g"),
+    REAL("environment", "tilt", tilt, -90, 90, 1, 1, "deg", "beam axis above the horizontal"),
+    REAL("excitation", "frequency", frequency, 0, INFINITY, 1, 1, "Hz", "excitation frequency f_ex"),
+    REAL("excitation", "acceleration", acceleration, 0, INFINITY, 0, 1, "m/s^2", "base acceleration amplitude a"),
+    INT("numerics", "modes", modes, 1, BS_MAX_MODES, "", "number of beam modes N"),
+    REAL("numerics", "dt", dt, 0, INFINITY, 1, 1, "s", "time step (explicit limit: omega_max dt < 2)"),
+    INT("numerics", "pgs_max_sweeps", pgs_max_sweeps, 1, 1000000000, "", "cap on contact-solve sweeps per step"),
+    REAL("numerics", "pgs_tol_rel", pgs_tol_rel, 0, INFINITY, 0, 1, "", "relative tolerance of the contact solve"),
+    REAL("numerics", "pgs_tol_abs", pgs_tol_abs, 0, INFINITY, 0, 1, "N s", "absolute tolerance of the contact solve"),
+    REAL("run", "s0", s0, 0, 1, 0, 0, "", "start position x_C / L (PCS: prescribed position)"),
+    REAL("run", "t_end", t_end, 0, INFINITY, 1, 1, "s", "simulated time"),
+    { "run", "model", FIELD_MODEL, offsetof(scene_params, model), 0, 0, 0, 0, "", "free | pcs" },
+    { 0, 0, FIELD_REAL, 0, 0, 0, 0, 0, 0, 0 }
+};
+
+void field_range_text(const field_spec *f, char *out, size_t size)
+{
+    char low[32];
+    char high[32];
+
+    if (f->kind == FIELD_MODEL) {
+        snprintf(out, size, "one of: free, pcs");
+        return;
+    }
+    if (f->kind == FIELD_TEXT) {
+        snprintf(out, size, "text of at most %d characters", SCENE_TEXT - 1);
+        return;
+    }
+    if (isinf(f->low))
+        snprintf(low, sizeof low, "-inf");
+    else
+        snprintf(low, sizeof low, "%g", f->low);
+    if (isinf(f->high))
+        snprintf(high, sizeof high, "inf");
+    else
+        snprintf(high, sizeof high, "%g", f->high);
+    if (f->kind == FIELD_INT)
+        snprintf(out, size, "an integer in [%s, %s]", low, high);
+    else
+        snprintf(out, size, "a finite number in %c%s, %s%c%s%s", f->low_open ? '(' : '[', low, high,
+                 f->high_open ? ')' : ']', *f->unit ? " " : "", f->unit);
+}

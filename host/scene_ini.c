@@ -1,0 +1,312 @@
+/* scene_ini.c - reading scene files with libinih, every field checked.
+ *
+ * libinih (Debian's libinih-dev) does the INI syntax. Its handler gets no line
+ * number in the Debian build, so the file is fed through a reader that counts
+ * lines (and refuses over-long lines instead of letting them be split). The
+ * first error wins and names file, line, field, value and the allowed range.
+ */
+#include "scene_ini.h"
+
+#include <ini.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct reader {
+    FILE *file;
+    int line;
+    int too_long;     /* line number of the first over-long line, 0 if none */
+} reader;
+
+typedef struct parse {
+    scene_file *scene;
+    reader *in;
+    int file;         /* index into scene->files */
+    int scan_base;    /* 1: only look for [scene] base */
+    char base[SCENE_PATH];
+    char *err;
+    size_t err_size;
+    int failed;
+} parse;
+
+static char *read_line(char *str, int num, void *stream)
+{
+    reader *in = (reader *)stream;
+    char *line = fgets(str, num, in->file);
+    size_t length;
+
+    if (!line)
+        return NULL;
+    ++in->line;
+    length = strlen(line);
+    if (length > 0 && line[length - 1] != '\n' && !feof(in->file) && !in->too_long)
+        in->too_long = in->line;
+    return line;
+}
+
+static int field_index(const char *section, const char *key)
+{
+    int i;
+    for (i = 0; scene_fields[i].key; ++i)
+        if (!strcmp(scene_fields[i].section, section) && !strcmp(scene_fields[i].key, key))
+            return i;
+    return -1;
+}
+
+/* Parses value for field f into the params; 0 or -1 with the reason. */
+static int assign(scene_params *params, const field_spec *f, const char *value, char *why, size_t size)
+{
+    char *target = (char *)params + f->offset;
+    char range[96];
+    char *end;
+
+    field_range_text(f, range, sizeof range);
+    if (f->kind == FIELD_TEXT) {
+        if (strlen(value) >= SCENE_TEXT) {
+            snprintf(why, size, "too long; allowed: %s", range);
+            return -1;
+        }
+        strcpy(target, value);
+        return 0;
+    }
+    if (f->kind == FIELD_MODEL) {
+        if (!strcmp(value, "free"))
+            *(int *)target = BS_MODEL_FREE;
+        else if (!strcmp(value, "pcs"))
+            *(int *)target = BS_MODEL_PCS;
+        else {
+            snprintf(why, size, "unknown model; allowed: %s", range);
+            return -1;
+        }
+        return 0;
+    }
+    if (*value == '\0') {
+        snprintf(why, size, "no value; allowed: %s", range);
+        return -1;
+    }
+    if (f->kind == FIELD_INT) {
+        long number = strtol(value, &end, 10);
+        if (*end != '\0') {
+            snprintf(why, size, "not an integer; allowed: %s", range);
+            return -1;
+        }
+        if (number < (long)f->low || number > (long)f->high) {
+            snprintf(why, size, "out of range; allowed: %s", range);
+            return -1;
+        }
+        *(int *)target = (int)number;
+        return 0;
+    }
+    {
+        double number = strtod(value, &end);
+        if (*end != '\0') {
+            snprintf(why, size, "not a number; allowed: %s", range);
+            return -1;
+        }
+        if (!isfinite(number)) {
+            snprintf(why, size, "not finite; allowed: %s", range);
+            return -1;
+        }
+        if ((f->low_open ? number <= f->low : number < f->low)
+            || (f->high_open ? number >= f->high : number > f->high)) {
+            snprintf(why, size, "out of range; allowed: %s", range);
+            return -1;
+        }
+        *(double *)target = number;
+    }
+    return 0;
+}
+
+static int set_field(scene_file *scene, int file, int line, const char *section, const char *key,
+                     const char *value, char *err, size_t err_size)
+{
+    const int i = field_index(section, key);
+    char why[192];
+
+    if (i < 0) {
+        snprintf(err, err_size, "%s:%d: unknown field [%s] %s", scene->files[file], line, section, key);
+        return -1;
+    }
+    if (scene->set_file[i] == file && line > 0) {
+        snprintf(err, err_size, "%s:%d: [%s] %s set twice (first at line %d)", scene->files[file], line,
+                 section, key, scene->set_line[i]);
+        return -1;
+    }
+    if (assign(&scene->params, &scene_fields[i], value, why, sizeof why) != 0) {
+        if (line > 0)
+            snprintf(err, err_size, "%s:%d: [%s] %s = %s: %s", scene->files[file], line, section, key,
+                     value, why);
+        else
+            snprintf(err, err_size, "%s %s: %s", scene->files[file], value, why);
+        return -1;
+    }
+    scene->set_file[i] = file;
+    scene->set_line[i] = line;
+    return 0;
+}
+
+static int on_entry(void *user, const char *section, const char *key, const char *value)
+{
+    parse *p = (parse *)user;
+    const int is_base = !strcmp(section, "scene") && !strcmp(key, "base");
+
+    if (p->failed)
+        return 0;
+    if (p->scan_base) {
+        if (is_base) {
+            if (strlen(value) >= sizeof p->base) {
+                snprintf(p->err, p->err_size, "%s:%d: [scene] base: path too long",
+                         p->scene->files[p->file], p->in->line);
+                p->failed = 1;
+                return 0;
+            }
+            strcpy(p->base, value);
+        }
+        return 1;
+    }
+    if (is_base)
+        return 1;
+    if (set_field(p->scene, p->file, p->in->line, section, key, value, p->err, p->err_size) != 0) {
+        p->failed = 1;
+        return 0;
+    }
+    return 1;
+}
+
+/* One pass of libinih over the file; 0 or -1 with err filled. */
+static int run_parser(parse *p)
+{
+    const char *path = p->scene->files[p->file];
+    reader in;
+    int result;
+
+    in.file = fopen(path, "r");
+    in.line = 0;
+    in.too_long = 0;
+    if (!in.file) {
+        snprintf(p->err, p->err_size, "%s: cannot open scene file", path);
+        return -1;
+    }
+    p->in = &in;
+    result = ini_parse_stream(read_line, &in, on_entry, p);
+    fclose(in.file);
+    if (in.too_long && !p->failed) {
+        snprintf(p->err, p->err_size, "%s:%d: line longer than %d characters", path, in.too_long,
+                 ini_max_line - 3);
+        return -1;
+    }
+    if (p->failed)
+        return -1;
+    if (result != 0) {
+        snprintf(p->err, p->err_size, "%s:%d: syntax error (expected [section], key = value or a comment)",
+                 path, result);
+        return -1;
+    }
+    return 0;
+}
+
+static int add_file(scene_file *scene, const char *path, char *err, size_t err_size)
+{
+    int i;
+    for (i = 1; i < scene->file_count; ++i) /* an option given twice reuses its entry */
+        if (!strcmp(scene->files[i], path))
+            return i;
+    if (scene->file_count >= SCENE_MAX_FILES) {
+        snprintf(err, err_size, "%s: too many nested base files (at most %d)", path, SCENE_MAX_FILES);
+        return -1;
+    }
+    if (strlen(path) >= SCENE_PATH) {
+        snprintf(err, err_size, "%s: path too long", path);
+        return -1;
+    }
+    strcpy(scene->files[scene->file_count], path);
+    return scene->file_count++;
+}
+
+static int load_file(scene_file *scene, const char *path, char *err, size_t err_size)
+{
+    parse p;
+    const int file = add_file(scene, path, err, err_size);
+
+    if (file < 0)
+        return -1;
+    memset(&p, 0, sizeof p);
+    p.scene = scene;
+    p.file = file;
+    p.err = err;
+    p.err_size = err_size;
+    p.scan_base = 1;
+    if (run_parser(&p) != 0)
+        return -1;
+    if (p.base[0]) {
+        char base_path[SCENE_PATH];
+        const char *slash = strrchr(path, '/');
+        const int folder = slash && p.base[0] != '/' ? (int)(slash - path + 1) : 0;
+        if (snprintf(base_path, sizeof base_path, "%.*s%s", folder, path, p.base) >= (int)sizeof base_path) {
+            snprintf(err, err_size, "%s: [scene] base: path too long", path);
+            return -1;
+        }
+        if (load_file(scene, base_path, err, err_size) != 0)
+            return -1;
+    }
+    p.scan_base = 0;
+    return run_parser(&p);
+}
+
+static void default_name(scene_file *scene, const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    size_t length = strcspn(base, ".");
+    if (length >= SCENE_TEXT)
+        length = SCENE_TEXT - 1;
+    memcpy(scene->params.name, base, length);
+    scene->params.name[length] = '\0';
+}
+
+int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
+{
+    int i;
+
+    memset(scene, 0, sizeof *scene);
+    for (i = 0; i < SCENE_MAX_FIELDS; ++i)
+        scene->set_file[i] = -1;
+    ini_allow_multiline = 0; /* an indented line is an error, not a silent continuation */
+    default_name(scene, path);
+    if (load_file(scene, path, err, err_size) != 0)
+        return -1;
+    for (i = 0; scene_fields[i].key; ++i) {
+        const field_spec *f = &scene_fields[i];
+        char range[96];
+        if (scene->set_file[i] >= 0 || f->kind == FIELD_TEXT)
+            continue;
+        field_range_text(f, range, sizeof range);
+        snprintf(err, err_size, "%s: missing field [%s] %s (%s; allowed: %s)%s", path, f->section, f->key,
+                 f->meaning, range, scene->file_count > 1 ? " in the file and its base" : "");
+        return -1;
+    }
+    return 0;
+}
+
+int scene_set(scene_file *scene, const char *section, const char *key, const char *value,
+              const char *origin, char *err, size_t err_size)
+{
+    const int file = add_file(scene, origin, err, err_size);
+    if (file < 0)
+        return -1;
+    return set_field(scene, file, 0, section, key, value, err, err_size);
+}
+
+const char *scene_where(const scene_file *scene, const char *section, const char *key,
+                        char *out, size_t size)
+{
+    const int i = field_index(section, key);
+    if (i < 0 || scene->set_file[i] < 0)
+        snprintf(out, size, "(unset)");
+    else if (scene->set_line[i] > 0)
+        snprintf(out, size, "%s:%d", scene->files[scene->set_file[i]], scene->set_line[i]);
+    else
+        snprintf(out, size, "%s", scene->files[scene->set_file[i]]);
+    return out;
+}

@@ -1,0 +1,58 @@
+/* scene_params.h - a scene as physical parameters (what the INI files hold). */
+#ifndef SCENE_PARAMS_H
+#define SCENE_PARAMS_H
+
+#include <stddef.h>
+#include "beamslider.h"
+#include "modal.h"
+
+#define SCENE_TEXT 128
+
+typedef struct scene_params {
+    char name[SCENE_TEXT];          /* [scene] name, default: file name without .ini */
+    char description[SCENE_TEXT];   /* [scene] description */
+    modal_beam beam;                /* [beam], [clamps] */
+    double damping_ratio;           /* D, all modes */
+    double slider_mass;             /* m [kg] */
+    double slider_inertia;          /* J_C [kg m^2] */
+    double slot_width;              /* B [m] */
+    double com_offset;              /* d [m] */
+    double play_ratio;              /* r_h = R / h */
+    double mu;                      /* Coulomb friction */
+    double e_n;                     /* normal restitution */
+    double gravity;                 /* g [m/s^2] */
+    double tilt;                    /* beam axis above horizontal [deg] */
+    double frequency;               /* f_ex [Hz] */
+    double acceleration;            /* a [m/s^2] */
+    int modes;                      /* N */
+    double dt;                      /* [s] */
+    int pgs_max_sweeps;
+    double pgs_tol_rel;
+    double pgs_tol_abs;             /* [N s] */
+    double s0;                      /* start position x_C / L */
+    double t_end;                   /* [s] */
+    int model;                      /* bs_model */
+} scene_params;
+
+typedef enum field_kind { FIELD_REAL, FIELD_INT, FIELD_MODEL, FIELD_TEXT } field_kind;
+
+/* One INI field: where it lives, what it means and its allowed range
+ * (low/high, each open or closed). */
+typedef struct field_spec {
+    const char *section;
+    const char *key;
+    field_kind kind;
+    size_t offset;
+    double low, high;
+    int low_open, high_open;
+    const char *unit;
+    const char *meaning;
+} field_spec;
+
+/* The table of every field, terminated by an entry with key NULL. */
+extern const field_spec scene_fields[];
+
+/* Writes "[low, high)" style text of f's range into out. */
+void field_range_text(const field_spec *f, char *out, size_t size);
+
+#endif
