@@ -29,8 +29,10 @@ CORE_CFLAGS := $(BASE_CFLAGS) -fno-tree-loop-distribute-patterns -Icore -Iport/h
 HOST_CFLAGS := $(BASE_CFLAGS) -Icore -Iport -Iport/host -Ihost
 
 CORE_SRC := $(wildcard core/*.c)
-HOST_LIB_SRC := $(filter-out host/main.c,$(wildcard host/*.c)) port/host/bs_platform_host.c
+HOST_CLI_SRC := host/main.c $(wildcard host/cli_*.c)
+HOST_LIB_SRC := $(filter-out $(HOST_CLI_SRC),$(wildcard host/*.c)) port/host/bs_platform_host.c
 CORE_OBJ := $(CORE_SRC:%.c=$(OBJ)/%.o)
+HOST_CLI_OBJ := $(HOST_CLI_SRC:%.c=$(OBJ)/%.o)
 HOST_LIB_OBJ := $(HOST_LIB_SRC:%.c=$(OBJ)/%.o)
 HOST_LIBS := -linih -lm
 
@@ -48,7 +50,7 @@ all: $(BUILD)/beamslider
 $(BUILD)/beamslider: $(OBJ)/beamslider
 	cp $< $@
 
-$(OBJ)/beamslider: $(OBJ)/host/main.o $(HOST_LIB_OBJ) $(CORE_OBJ)
+$(OBJ)/beamslider: $(HOST_CLI_OBJ) $(HOST_LIB_OBJ) $(CORE_OBJ)
 	$(CC) $(CFLAGS) -o $@ $^ $(HOST_LIBS)
 
 $(OBJ)/core/%.o: core/%.c $(wildcard core/*.h) port/host/bs_port.h | deps-build
@@ -84,7 +86,9 @@ test: deps-test
 	$(MAKE) --no-print-directory REAL=float test-one
 	@echo "make test: all tests passed (double and float)"
 
-bench: $(BUILD)/beamslider
+bench:
+	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
 	sh host/bench.sh
 
 deps-build:

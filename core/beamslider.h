@@ -104,8 +104,19 @@ bs_real bs_sim_sensor(const bs_sim *sim);
 /* Relative slider position s = x_C / L. */
 bs_real bs_sim_position(const bs_sim *sim);
 
-/* Vertical position z_C [m] and rotation beta [rad] of the slider. */
-void bs_sim_slider(const bs_sim *sim, bs_real *z_c, bs_real *beta);
+/* Copies the state out: modal coordinates q_k and velocities (n_modes values
+ * each), slider (x_C [m], z_C [m], beta [rad]) and its velocities. Any
+ * pointer may be NULL to skip that part. */
+void bs_sim_get_state(const bs_sim *sim, bs_real *q_beam, bs_real *u_beam, bs_real *slider,
+                      bs_real *slider_velocity);
+
+/* Overwrites the state (a digital twin re-synchronising with measurements,
+ * tests setting initial conditions); NULL leaves that part as it is. Every
+ * value must be finite and, in the free model, x_C within the clamp stops;
+ * otherwise nothing changes and BS_E_ARGUMENT is returned. Percussions of the
+ * warm start are cleared. Returns BS_OK, BS_E_NULL or BS_E_ARGUMENT. */
+bs_status bs_sim_set_state(bs_sim *sim, const bs_real *q_beam, const bs_real *u_beam,
+                           const bs_real *slider, const bs_real *slider_velocity);
 
 /* Excitation phase as a fraction of a period, [0, 1). */
 bs_real bs_sim_phase(const bs_sim *sim);

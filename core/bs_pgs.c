@@ -33,11 +33,15 @@
  * Silcowitz, Niebe, Erleben 2010.)
  *
  * Warm start: P comes in holding each contact's percussion of the last step.
- * Stop: after each sweep the natural-map residual of the current P,
+ * Stop: after each sweep (and subspace step) the natural-map residual of the
+ * current P,
  *   e = sum_i | P_i - prox(P_i - r_i xi_i) |,
- * is computed; the solve stops when e <= tol_rel |P| + tol_abs (converged) or
- * when max_sweeps sweeps are done. The residual returned is the one of the P
- * returned, whether converged or not (MODEL.md 9.5: report it, never hide it).
+ * is computed; the solve stops when e <= tol_rel |P| + tol_abs (converged),
+ * when max_sweeps sweeps are done, or when a sweep did not lower e (stalled:
+ * e is at the floor the precision reaches for this G, which in float can lie
+ * above the tolerance for the nearly singular corner pairs). The residual
+ * returned is the one of the P returned, whether converged or not
+ * (MODEL.md 9.5: report it, never hide it).
  */
 #include "bs_pgs.h"
 #include "bs_port.h"
@@ -261,27 +265,35 @@ static int correct_modes(const bs_contact_set *set, int *mode)
     return 0;
 }
 
-#define SUBSPACE_TRIES 8 /* mode corrections per subspace step */
+#define SUBSPACE_TRIES 8 /* mode sets tried per subspace step */
 
-/* Subspace step: a few rounds of "solve the modes' linear system, move the
- * contacts whose law it breaks". Keeps the best P seen (smallest residual). */
+/* Subspace step: rounds of "solve the modes' linear system, move the first
+ * contact whose law it breaks", until the laws hold, a mode set repeats (the
+ * rounds would cycle) or SUBSPACE_TRIES sets were tried. Keeps the best P
+ * seen (smallest residual). */
 static void try_subspace(bs_contact_set *set, bs_real *residual, bs_real *norm)
 {
     const int rows = 2 * set->count;
     bs_real best[2 * BS_MAX_CONTACTS];
     bs_real trial[2 * BS_MAX_CONTACTS];
+    int tried[SUBSPACE_TRIES][BS_MAX_CONTACTS];
     int mode[BS_MAX_CONTACTS];
-    int improved = 0;
-    int try_count, j;
+    int count, j;
 
     for (j = 0; j < rows; ++j)
         best[j] = set->percussion[j];
     for (j = 0; j < set->count; ++j)
         mode[j] = mode_of(set->mu[j], &set->percussion[2 * j]);
-    for (try_count = 0; try_count < SUBSPACE_TRIES; ++try_count) {
+    for (count = 0; count < SUBSPACE_TRIES; ++count) {
         bs_real trial_residual, trial_norm;
-        if (subspace_solve(set, mode, trial) != 0)
+        int seen, earlier;
+        for (seen = 0, earlier = 0; earlier < count && !seen; ++earlier)
+            for (seen = 1, j = 0; j < set->count; ++j)
+                seen &= tried[earlier][j] == mode[j];
+        if (seen || subspace_solve(set, mode, trial) != 0)
             break;
+        for (j = 0; j < set->count; ++j)
+            tried[count][j] = mode[j];
         for (j = 0; j < rows; ++j)
             set->percussion[j] = trial[j];
         trial_residual = bs_pgs_residual(set, &trial_norm);
@@ -290,12 +302,10 @@ static void try_subspace(bs_contact_set *set, bs_real *residual, bs_real *norm)
             *norm = trial_norm;
             for (j = 0; j < rows; ++j)
                 best[j] = trial[j];
-            improved = 1;
         }
         if (correct_modes(set, mode) == 0)
             break;
     }
-    (void)improved;
     for (j = 0; j < rows; ++j)
         set->percussion[j] = best[j];
 }
@@ -304,19 +314,23 @@ bs_pgs_result bs_pgs_solve(bs_contact_set *set, int max_sweeps, bs_real tol_rel,
 {
     bs_pgs_result result;
     bs_real norm = BS_R(0.0);
+    bs_real previous = BS_R(0.0);
     int a;
 
     result.sweeps = 0;
-    do { /* at least one sweep: the warm start is not trusted unchecked */
+    for (;;) { /* at least one sweep: the warm start is not trusted unchecked */
         for (a = 0; a < set->count; ++a)
             solve_contact(set, a);
         ++result.sweeps;
         result.residual = bs_pgs_residual(set, &norm);
-        result.converged = result.residual <= tol_rel * norm + tol_abs;
-        if (!result.converged && set->count > 1) {
+        if (result.residual > tol_rel * norm + tol_abs && set->count > 1)
             try_subspace(set, &result.residual, &norm);
-            result.converged = result.residual <= tol_rel * norm + tol_abs;
-        }
-    } while (!result.converged && result.sweeps < max_sweeps);
-    return result;
+        result.converged = result.residual <= tol_rel * norm + tol_abs;
+        /* stop at the cap, or when a round made no progress: then the
+         * residual sits at what the precision can resolve for this G */
+        if (result.converged || result.sweeps >= max_sweeps
+            || (result.sweeps > 1 && !(result.residual < previous)))
+            return result;
+        previous = result.residual;
+    }
 }

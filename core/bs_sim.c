@@ -231,10 +231,65 @@ bs_real bs_sim_position(const bs_sim *sim)
     return (sim->slider[0] + sim->x_c_low) / sim->scene->length;
 }
 
-void bs_sim_slider(const bs_sim *sim, bs_real *z_c, bs_real *beta)
+void bs_sim_get_state(const bs_sim *sim, bs_real *q_beam, bs_real *u_beam, bs_real *slider,
+                      bs_real *slider_velocity)
 {
-    *z_c = sim->slider[1];
-    *beta = sim->slider[2];
+    int k;
+    for (k = 0; k < sim->scene->n_modes; ++k) {
+        if (q_beam)
+            q_beam[k] = sim->q_beam[k];
+        if (u_beam)
+            u_beam[k] = sim->u_beam[k];
+    }
+    for (k = 0; k < 3; ++k) {
+        if (slider)
+            slider[k] = k == 0 ? sim->slider[0] + sim->x_c_low : sim->slider[k];
+        if (slider_velocity)
+            slider_velocity[k] = sim->slider_velocity[k];
+    }
+}
+
+static int all_finite(const bs_real *values, int count)
+{
+    int k;
+    for (k = 0; values && k < count; ++k)
+        if (values[k] - values[k] != BS_R(0.0))
+            return 0;
+    return 1;
+}
+
+bs_status bs_sim_set_state(bs_sim *sim, const bs_real *q_beam, const bs_real *u_beam,
+                           const bs_real *slider, const bs_real *slider_velocity)
+{
+    int k;
+
+    if (!sim || !sim->scene)
+        return BS_E_NULL;
+    if (!all_finite(q_beam, sim->scene->n_modes) || !all_finite(u_beam, sim->scene->n_modes)
+        || !all_finite(slider, 3) || !all_finite(slider_velocity, 3))
+        return BS_E_ARGUMENT;
+    if (slider && sim->model == BS_MODEL_FREE
+        && !(slider[0] >= sim->scene->stop_min && slider[0] <= sim->scene->stop_max))
+        return BS_E_ARGUMENT;
+    for (k = 0; k < sim->scene->n_modes; ++k) {
+        if (q_beam)
+            sim->q_beam[k] = q_beam[k];
+        if (u_beam)
+            sim->u_beam[k] = u_beam[k];
+    }
+    for (k = 0; k < 3; ++k) {
+        if (slider)
+            sim->slider[k] = slider[k];
+        if (slider_velocity)
+            sim->slider_velocity[k] = slider_velocity[k];
+    }
+    if (slider)
+        sim->x_c_low = BS_R(0.0);
+    for (k = 0; k < BS_MAX_CONTACTS; ++k) {
+        sim->percussion[k][0] = BS_R(0.0);
+        sim->percussion[k][1] = BS_R(0.0);
+    }
+    return BS_OK;
 }
 
 bs_real bs_sim_phase(const bs_sim *sim)

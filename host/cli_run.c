@@ -118,6 +118,7 @@ int cli_run(int argc, char **argv)
     options.model = (bs_model)file.params.model;
     options.s0 = file.params.s0;
     options.t_end = file.params.t_end;
+    options.dt = file.params.dt;
     options.every = cli.every;
     options.csv = csv;
     options.show_progress = 1;

@@ -16,10 +16,10 @@ const char run_csv_header[] = "t,w_sensor,s,z_c,beta,contacts,pgs_iters,pgs_resi
 static int write_row(FILE *csv, double t, const bs_sim *sim)
 {
     const bs_step_report *report = bs_sim_report(sim);
-    bs_real z_c, beta;
-    bs_sim_slider(sim, &z_c, &beta);
+    bs_real slider[3];
+    bs_sim_get_state(sim, NULL, NULL, slider, NULL);
     return fprintf(csv, "%.9f,%.9e,%.9f,%.9e,%.9e,%u,%d,%.3e\n", t, (double)bs_sim_sensor(sim),
-                   (double)bs_sim_position(sim), (double)z_c, (double)beta, report->active,
+                   (double)bs_sim_position(sim), (double)slider[1], (double)slider[2], report->active,
                    report->sweeps, (double)report->residual) < 0;
 }
 
@@ -28,7 +28,7 @@ int run_scene(const bs_scene *scene, const run_options *options, run_result *res
     static bs_sim sim; /* static: large, and the CLI runs one at a time */
     bs_monitor monitor;
     double amplitudes[RUN_AMP_PERIODS];
-    const double dt = (double)scene->dt;
+    const double dt = options->dt;
     const uint64_t steps = (uint64_t)llround(options->t_end / dt);
     const uint64_t progress_every = 1u << 16;
     const double start = bs_platform_seconds();

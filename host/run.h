@@ -12,6 +12,7 @@ typedef struct run_options {
     bs_model model;
     double s0;           /* start position (PCS: prescribed position) */
     double t_end;        /* [s] */
+    double dt;           /* the scene's step in double (time = step * dt) [s] */
     long every;          /* CSV row every this many steps */
     FILE *csv;           /* NULL: no CSV */
     int show_progress;   /* progress bar on a terminal */

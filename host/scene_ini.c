@@ -25,6 +25,7 @@ typedef struct parse {
     int file;         /* index into scene->files */
     int scan_base;    /* 1: only look for [scene] base */
     char base[SCENE_PATH];
+    int base_line;    /* line of [scene] base, 0 if none */
     char *err;
     size_t err_size;
     int failed;
@@ -155,6 +156,12 @@ static int on_entry(void *user, const char *section, const char *key, const char
         return 0;
     if (p->scan_base) {
         if (is_base) {
+            if (p->base_line) {
+                snprintf(p->err, p->err_size, "%s:%d: [scene] base set twice (first at line %d)",
+                         p->scene->files[p->file], p->in->line, p->base_line);
+                p->failed = 1;
+                return 0;
+            }
             if (strlen(value) >= sizeof p->base) {
                 snprintf(p->err, p->err_size, "%s:%d: [scene] base: path too long",
                          p->scene->files[p->file], p->in->line);
@@ -162,6 +169,7 @@ static int on_entry(void *user, const char *section, const char *key, const char
                 return 0;
             }
             strcpy(p->base, value);
+            p->base_line = p->in->line;
         }
         return 1;
     }
@@ -206,14 +214,17 @@ static int run_parser(parse *p)
     return 0;
 }
 
-static int add_file(scene_file *scene, const char *path, char *err, size_t err_size)
+/* reuse: an option given twice reuses its entry; a base file never does, so
+ * a cycle of bases runs into SCENE_MAX_FILES instead of recursing forever. */
+static int add_file(scene_file *scene, const char *path, int reuse, char *err, size_t err_size)
 {
     int i;
-    for (i = 1; i < scene->file_count; ++i) /* an option given twice reuses its entry */
+    for (i = 1; reuse && i < scene->file_count; ++i)
         if (!strcmp(scene->files[i], path))
             return i;
     if (scene->file_count >= SCENE_MAX_FILES) {
-        snprintf(err, err_size, "%s: too many nested base files (at most %d)", path, SCENE_MAX_FILES);
+        snprintf(err, err_size, "%s: too many nested base files (at most %d; a cycle of bases?)", path,
+                 SCENE_MAX_FILES);
         return -1;
     }
     if (strlen(path) >= SCENE_PATH) {
@@ -227,7 +238,7 @@ static int add_file(scene_file *scene, const char *path, char *err, size_t err_s
 static int load_file(scene_file *scene, const char *path, char *err, size_t err_size)
 {
     parse p;
-    const int file = add_file(scene, path, err, err_size);
+    const int file = add_file(scene, path, 0, err, err_size);
 
     if (file < 0)
         return -1;
@@ -241,12 +252,20 @@ static int load_file(scene_file *scene, const char *path, char *err, size_t err_
         return -1;
     if (p.base[0]) {
         char base_path[SCENE_PATH];
+        FILE *probe;
         const char *slash = strrchr(path, '/');
         const int folder = slash && p.base[0] != '/' ? (int)(slash - path + 1) : 0;
         if (snprintf(base_path, sizeof base_path, "%.*s%s", folder, path, p.base) >= (int)sizeof base_path) {
             snprintf(err, err_size, "%s: [scene] base: path too long", path);
             return -1;
         }
+        probe = fopen(base_path, "r"); /* name the line that asked for it */
+        if (!probe) {
+            snprintf(err, err_size, "%s:%d: [scene] base = %s: cannot open %s", path, p.base_line, p.base,
+                     base_path);
+            return -1;
+        }
+        fclose(probe);
         if (load_file(scene, base_path, err, err_size) != 0)
             return -1;
     }
@@ -258,7 +277,9 @@ static void default_name(scene_file *scene, const char *path)
 {
     const char *slash = strrchr(path, '/');
     const char *base = slash ? slash + 1 : path;
-    size_t length = strcspn(base, ".");
+    size_t length = strlen(base);
+    if (length > 4 && !strcmp(base + length - 4, ".ini"))
+        length -= 4;
     if (length >= SCENE_TEXT)
         length = SCENE_TEXT - 1;
     memcpy(scene->params.name, base, length);
@@ -292,7 +313,7 @@ int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
 int scene_set(scene_file *scene, const char *section, const char *key, const char *value,
               const char *origin, char *err, size_t err_size)
 {
-    const int file = add_file(scene, origin, err, err_size);
+    const int file = add_file(scene, origin, 1, err, err_size);
     if (file < 0)
         return -1;
     return set_field(scene, file, 0, section, key, value, err, err_size);

@@ -1,0 +1,26 @@
+#!/bin/sh
+# check_core_symbols.sh REAL OBJECT... - the core must reference no symbol
+# outside itself but the math the port provides (MODEL/issue: no malloc,
+# free, printf, abort, memset, ... in core/).
+real=$1
+shift
+if [ "$real" = float ]; then
+    allowed="sqrtf sinf cosf sincosf"
+else
+    allowed="sqrt sin cos sincos"
+fi
+undefined=$(nm -u "$@" | awk 'NF == 2 && $1 == "U" { print $2 }' | sort -u)
+defined=$(nm --defined-only "$@" | awk 'NF == 3 { print $3 }' | sort -u)
+bad=""
+external=""
+for symbol in $undefined; do
+    echo "$defined" | grep -qx "$symbol" && continue
+    external="$external $symbol"
+    case " $allowed " in *" $symbol "*) continue ;; esac
+    bad="$bad $symbol"
+done
+if [ -n "$bad" ]; then
+    echo "check_core_symbols ($real): FAIL: core objects reference:$bad (allowed: $allowed)"
+    exit 1
+fi
+echo "check_core_symbols ($real): ok: external references:$external"

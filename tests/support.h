@@ -1,0 +1,30 @@
+/* support.h - shared helpers of the CMocka tests. */
+#ifndef SUPPORT_H
+#define SUPPORT_H
+
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include "beamslider.h"
+#include "scene_build.h"
+
+/* Machine epsilon of the precision under test. */
+#define SUPPORT_EPS ((double)BS_REAL_EPS)
+
+/* Loads and builds a scene file; fails the test on any error. */
+void support_load(const char *path, scene_file *file, bs_scene *scene, scene_model *model);
+
+/* Rebuilds scene from file->params after a test changed them; fails on error. */
+void support_build(scene_file *file, bs_scene *scene, scene_model *model);
+
+/* Fails unless |actual - expected| <= abs_tol + rel_tol |expected|, printing
+ * what was compared, both values and the tolerance. */
+#define assert_close(what, actual, expected, abs_tol, rel_tol) \
+    support_assert_close(what, (double)(actual), (double)(expected), abs_tol, rel_tol, __FILE__, __LINE__)
+void support_assert_close(const char *what, double actual, double expected, double abs_tol,
+                          double rel_tol, const char *file, int line);
+
+#endif

@@ -1,0 +1,180 @@
+/* test_contact.c - contact laws on a rigid beam (n_modes = 0, no excitation):
+ * Newton impacts rebound with e_N, Coulomb friction holds or lets go at
+ * mu = tan(tilt), the clamp end stops hold the slider on the beam. */
+#include "support.h"
+
+#include <math.h>
+
+static scene_file file;
+static bs_scene scene;
+static scene_model model;
+static bs_sim sim;
+
+static const double pi = 3.14159265358979323846;
+
+/* Rigid, motionless beam; the parameters of fig6 otherwise. */
+static void rigid_beam(double restitution, double friction, double tilt_deg, double gravity)
+{
+    support_load("configs/fig6.ini", &file, &scene, &model);
+    file.params.acceleration = 0.0;
+    file.params.e_n = restitution;
+    file.params.mu = friction;
+    file.params.tilt = tilt_deg;
+    file.params.gravity = gravity;
+    support_build(&file, &scene, &model);
+    scene.n_modes = 0;
+}
+
+/* Steps until the given corners are active; returns the slider's vertical
+ * velocity before and after that step. */
+static void first_impact(unsigned corners, double *before, double *after)
+{
+    int n;
+    for (n = 0; n < 100000; ++n) {
+        bs_real velocity[3];
+        bs_sim_get_state(&sim, NULL, NULL, NULL, velocity);
+        *before = (double)velocity[1];
+        assert_int_equal(bs_sim_step(&sim), BS_OK);
+        if (bs_sim_report(&sim)->active) {
+            assert_int_equal(bs_sim_report(&sim)->active, corners);
+            bs_sim_get_state(&sim, NULL, NULL, NULL, velocity);
+            *after = (double)velocity[1];
+            return;
+        }
+    }
+    fail_msg("no impact");
+}
+
+/* Moreau-Newton: xi_N = gamma+ + e_N gamma- = 0 for both corners of the
+ * face, so u_z after = -e_N u_z before exactly (gravity's impulse over the
+ * step is absorbed by the percussion). */
+static void test_slider_dropped_on_rigid_beam_rebounds_with_e_n(void **state)
+{
+    static const double restitution[] = { 0.0, 0.5, 1.0 };
+    unsigned i;
+    (void)state;
+    for (i = 0; i < 3; ++i) {
+        const bs_real drop[3] = { 0, BS_R(-0.1), 0 };
+        double before, after;
+        rigid_beam(restitution[i], 0.2, 0.0, 9.81);
+        assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_FREE, BS_R(0.5)), BS_OK);
+        assert_int_equal(bs_sim_set_state(&sim, NULL, NULL, NULL, drop), BS_OK);
+        first_impact(0x9u /* P1 and P4: the top corners land on the top face */, &before, &after);
+        assert_true(before < -0.09);
+        assert_close("rebound velocity", after, -restitution[i] * before, 64 * SUPPORT_EPS * fabs(before),
+                     0.0);
+    }
+}
+
+static void test_slider_thrown_up_rebounds_from_bottom_corners(void **state)
+{
+    const bs_real throw_up[3] = { 0, BS_R(0.1), 0 };
+    double before, after;
+    (void)state;
+    rigid_beam(0.5, 0.2, 0.0, 0.0);
+    assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_FREE, BS_R(0.5)), BS_OK);
+    assert_int_equal(bs_sim_set_state(&sim, NULL, NULL, NULL, throw_up), BS_OK);
+    first_impact(0x6u /* P2 and P3 */, &before, &after);
+    assert_close("rebound velocity", after, -0.5 * before, 64 * SUPPORT_EPS * fabs(before), 0.0);
+}
+
+/* The slider resting on its top corners on a beam tilted by theta: friction
+ * holds it when mu > tan(theta); below, it slides down with
+ * a = -g (sin theta - mu cos theta) (leapfrog is exact for constant
+ * acceleration: x_n = x_0 + a (n h)^2 / 2). */
+static double slide(double friction, double tilt_deg, double seconds)
+{
+    const double h = file.params.dt;
+    const long steps = (long)(seconds / h + 0.5);
+    bs_real pose[3];
+    double x0;
+    long n;
+
+    rigid_beam(0.0, friction, tilt_deg, 9.81);
+    assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_FREE, BS_R(0.5)), BS_OK);
+    bs_sim_get_state(&sim, NULL, NULL, pose, NULL);
+    /* top corners on the top face, z_C = h/2 - R/2 - d, and 1 nm into it so
+     * that the contact takes part from the first step */
+    pose[1] = (bs_real)(0.5 * file.params.beam.thickness
+                        - 0.5 * file.params.play_ratio * file.params.beam.thickness - file.params.com_offset
+                        - 1e-9);
+    assert_int_equal(bs_sim_set_state(&sim, NULL, NULL, pose, NULL), BS_OK);
+    x0 = (double)pose[0];
+    for (n = 0; n < steps; ++n) {
+        assert_int_equal(bs_sim_step(&sim), BS_OK);
+        assert_int_equal(bs_sim_report(&sim)->active, 0x9u);
+        assert_true(bs_sim_report(&sim)->converged);
+    }
+    bs_sim_get_state(&sim, NULL, NULL, pose, NULL);
+    return (double)pose[0] - x0;
+}
+
+static void test_tilted_beam_holds_slider_when_mu_above_tan_tilt(void **state)
+{
+    const double tilt = atan(0.1) * 180.0 / pi;
+    (void)state;
+    /* sliding would cover ~1 mm (mu = 0.09) to 12 cm (mu = 0) in this time */
+    assert_close("displacement, mu = 0.11 > tan = 0.1 [m]", slide(0.11, tilt, 0.5), 0.0, 1e-9, 0.0);
+    assert_close("displacement, mu = 0.5 [m]", slide(0.5, tilt, 0.5), 0.0, 1e-9, 0.0);
+}
+
+static void test_tilted_beam_lets_slider_slide_when_mu_below_tan_tilt(void **state)
+{
+    const double tilt = atan(0.1), seconds = 0.2, g = 9.81; /* 2 cm at most: the stop is 6.5 cm away */
+    static const double friction[] = { 0.09, 0.05, 0.0 };
+    unsigned i;
+    (void)state;
+    for (i = 0; i < 3; ++i) {
+        const double a = -g * (sin(tilt) - friction[i] * cos(tilt));
+        assert_close("sliding displacement [m]", slide(friction[i], tilt * 180.0 / pi, seconds),
+                     0.5 * a * seconds * seconds, 0.0, BS_REAL_FLOAT ? 1e-4 : 1e-9);
+    }
+}
+
+/* The clamp stops: a slider thrown at the left clamp bounces back with e_N
+ * and never passes stop_min by more than one step's travel. */
+static void test_slider_thrown_at_clamp_bounces_off_end_stop(void **state)
+{
+    const bs_real throw_left[3] = { BS_R(-0.5), 0, 0 };
+    double x_min = 1.0;
+    bs_real pose[3], velocity[3];
+    int n;
+    (void)state;
+    rigid_beam(0.5, 0.0, 0.0, 0.0);
+    assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_FREE, (bs_real)(0.04)), BS_OK);
+    assert_int_equal(bs_sim_set_state(&sim, NULL, NULL, NULL, throw_left), BS_OK);
+    for (n = 0; n < 5000; ++n) {
+        assert_int_equal(bs_sim_step(&sim), BS_OK);
+        bs_sim_get_state(&sim, NULL, NULL, pose, velocity);
+        x_min = fmin(x_min, (double)pose[0]);
+    }
+    assert_true(x_min >= (double)scene.stop_min - 0.5 * (double)scene.dt);
+    assert_close("velocity after the stop", velocity[0], 0.25, 1e-12, 64 * SUPPORT_EPS);
+}
+
+static void test_slider_started_at_clamp_stays_on_beam(void **state)
+{
+    bs_real pose[3];
+    int n;
+    (void)state;
+    support_load("configs/fig6.ini", &file, &scene, &model); /* full model, excited */
+    assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_FREE, scene.stop_min / scene.length), BS_OK);
+    for (n = 0; n < 100000; ++n) { /* 2 s */
+        assert_int_equal(bs_sim_step(&sim), BS_OK);
+        bs_sim_get_state(&sim, NULL, NULL, pose, NULL);
+        assert_true(pose[0] >= scene.stop_min - BS_R(1e-6));
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_slider_dropped_on_rigid_beam_rebounds_with_e_n),
+        cmocka_unit_test(test_slider_thrown_up_rebounds_from_bottom_corners),
+        cmocka_unit_test(test_tilted_beam_holds_slider_when_mu_above_tan_tilt),
+        cmocka_unit_test(test_tilted_beam_lets_slider_slide_when_mu_below_tan_tilt),
+        cmocka_unit_test(test_slider_thrown_at_clamp_bounces_off_end_stop),
+        cmocka_unit_test(test_slider_started_at_clamp_stays_on_beam),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,788 @@
+/* test_scene.c - the INI scene reader: scene_load, scene_set, scene_build.
+ *
+ * Every refusal is checked for what the user needs to fix it: the file and
+ * line (or the option) where the value was set, the [section] key and the
+ * allowed range as field_range_text() writes it. Scene files are written into
+ * a mkdtemp folder under /tmp; the ones that need the full parameter set name
+ * a copy of configs/mssp2023.ini there as their base. Run from the repository
+ * root (the shipped scenes are read as configs/NAME.ini).
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include "support.h"
+
+#include <dirent.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+/* static: large */
+static scene_file read_scene;
+static bs_scene core_scene;
+static scene_model scene_derived;
+static char message[1024];
+
+static char tmp_dir[64];
+static char field_path[SCENE_PATH]; /* the scene written by write_field_scene */
+
+#define FIELD_LINE 4 /* the line write_field_scene puts the field under test on */
+
+/* ---- helpers ---------------------------------------------------------- */
+
+static void tmp_path(char *out, size_t size, const char *name)
+{
+    const int length = snprintf(out, size, "%s/%s", tmp_dir, name);
+    assert_true(length > 0 && (size_t)length < size);
+}
+
+static void write_file(const char *name, const char *text)
+{
+    char path[SCENE_PATH];
+    FILE *out;
+
+    tmp_path(path, sizeof path, name);
+    out = fopen(path, "w");
+    assert_non_null(out);
+    assert_true(fputs(text, out) >= 0);
+    assert_int_equal(fclose(out), 0);
+}
+
+static void copy_file(const char *from, const char *name)
+{
+    char text[8192];
+    FILE *in = fopen(from, "r");
+    size_t length;
+
+    assert_non_null(in);
+    length = fread(text, 1, sizeof text - 1, in);
+    assert_true(feof(in)); /* the whole file fitted */
+    assert_int_equal(fclose(in), 0);
+    text[length] = '\0';
+    write_file(name, text);
+}
+
+/* scene_load of tmp_dir/name into read_scene; the path goes to path. */
+static int load_tmp(const char *name, char *path, size_t size)
+{
+    tmp_path(path, size, name);
+    message[0] = '\0';
+    return scene_load(path, &read_scene, message, sizeof message);
+}
+
+/* 1-based number of the first line of path starting with prefix; fails if none. */
+static int line_of(const char *path, const char *prefix)
+{
+    char text[512];
+    FILE *in = fopen(path, "r");
+    int line = 0;
+
+    assert_non_null(in);
+    while (fgets(text, sizeof text, in)) {
+        ++line;
+        if (!strncmp(text, prefix, strlen(prefix))) {
+            fclose(in);
+            return line;
+        }
+    }
+    fclose(in);
+    print_error("%s has no line starting with \"%s\"\n", path, prefix);
+    fail();
+    return -1;
+}
+
+static const field_spec *field_of(const char *section, const char *key)
+{
+    int i;
+    for (i = 0; scene_fields[i].key; ++i)
+        if (!strcmp(scene_fields[i].section, section) && !strcmp(scene_fields[i].key, key))
+            return &scene_fields[i];
+    print_error("no field [%s] %s in scene_fields\n", section, key);
+    fail();
+    return NULL;
+}
+
+static void range_text(const char *section, const char *key, char *out, size_t size)
+{
+    field_range_text(field_of(section, key), out, size);
+}
+
+/* Fails unless message contains every string given (a NULL ends the list). */
+#define assert_message_has(...) check_message_has(__FILE__, __LINE__, __VA_ARGS__, (const char *)NULL)
+static void check_message_has(const char *source, int source_line, const char *first, ...)
+{
+    va_list args;
+    const char *needle;
+    const char *missing = NULL;
+
+    va_start(args, first);
+    for (needle = first; needle && !missing; needle = va_arg(args, const char *))
+        if (!strstr(message, needle))
+            missing = needle;
+    va_end(args);
+    if (missing) {
+        print_error("error message \"%s\"\n  does not contain \"%s\"\n", message, missing);
+        _fail(source, source_line);
+    }
+}
+
+/* "path:line:" into out. */
+static void place(char *out, size_t size, const char *path, int line)
+{
+    snprintf(out, size, "%s:%d:", path, line);
+}
+
+/* A complete scene (base mssp2023.ini) with [section] key = value on line
+ * FIELD_LINE, written as field.ini. The excitation and run lines it adds
+ * leave out the field under test, so a valid value loads. */
+static void write_field_scene(const char *section, const char *key, const char *value)
+{
+    static const struct { const char *section, *key, *value; } extra[] = {
+        { "excitation", "frequency", "124" },
+        { "excitation", "acceleration", "14" },
+        { "run", "s0", "0.3" },
+        { "run", "t_end", "1" },
+    };
+    char text[2048];
+    size_t used;
+    size_t i;
+
+    used = (size_t)snprintf(text, sizeof text, "[scene]\nbase = mssp2023.ini\n[%s]\n%s = %s\n", section,
+                            key, value);
+    for (i = 0; i < sizeof extra / sizeof extra[0]; ++i) {
+        if (!strcmp(extra[i].section, section) && !strcmp(extra[i].key, key))
+            continue;
+        used += (size_t)snprintf(text + used, sizeof text - used, "[%s]\n%s = %s\n", extra[i].section,
+                                 extra[i].key, extra[i].value);
+    }
+    assert_true(used < sizeof text);
+    write_file("field.ini", text);
+    tmp_path(field_path, sizeof field_path, "field.ini");
+}
+
+static int load_field(const char *section, const char *key, const char *value)
+{
+    write_field_scene(section, key, value);
+    message[0] = '\0';
+    return scene_load(field_path, &read_scene, message, sizeof message);
+}
+
+/* The value must be refused by scene_load with file:line, [section] key and
+ * the allowed range in the message. */
+#define assert_field_refused(section, key, value) \
+    check_field_refused(section, key, value, __FILE__, __LINE__)
+static void check_field_refused(const char *section, const char *key, const char *value,
+                                const char *source, int source_line)
+{
+    char where[SCENE_PATH + 16];
+    char field[96];
+    char range[96];
+    const int status = load_field(section, key, value);
+
+    if (status != -1) {
+        print_error("[%s] %s = \"%s\": scene_load returned %d, expected -1\n", section, key, value, status);
+        _fail(source, source_line);
+    }
+    place(where, sizeof where, field_path, FIELD_LINE);
+    snprintf(field, sizeof field, "[%s] %s", section, key);
+    range_text(section, key, range, sizeof range);
+    check_message_has(source, source_line, where, field, range, (const char *)NULL);
+}
+
+#define assert_field_accepted(section, key, value) \
+    check_field_accepted(section, key, value, __FILE__, __LINE__)
+static void check_field_accepted(const char *section, const char *key, const char *value,
+                                 const char *source, int source_line)
+{
+    if (load_field(section, key, value) != 0) {
+        print_error("[%s] %s = \"%s\" refused: %s\n", section, key, value, message);
+        _fail(source, source_line);
+    }
+}
+
+/* ---- fixture ---------------------------------------------------------- */
+
+static int make_tmp_dir(void **state)
+{
+    (void)state;
+    strcpy(tmp_dir, "/tmp/test_scene.XXXXXX");
+    if (!mkdtemp(tmp_dir)) {
+        perror("mkdtemp");
+        return -1;
+    }
+    copy_file("configs/mssp2023.ini", "mssp2023.ini");
+    return 0;
+}
+
+static int remove_tmp_dir(void **state)
+{
+    DIR *dir = opendir(tmp_dir);
+    struct dirent *entry;
+    char path[SCENE_PATH];
+
+    (void)state;
+    if (!dir)
+        return -1;
+    while ((entry = readdir(dir)) != NULL) {
+        if (!strcmp(entry->d_name, ".") || !strcmp(entry->d_name, ".."))
+            continue;
+        snprintf(path, sizeof path, "%s/%s", tmp_dir, entry->d_name);
+        unlink(path);
+    }
+    closedir(dir);
+    return rmdir(tmp_dir);
+}
+
+/* ---- shipped scenes --------------------------------------------------- */
+
+static void test_shipped_scenes_load_and_build(void **state)
+{
+    static const char *const names[] = { "fig6", "fig7", "fig8", "fig9", "fig12a", "fig12b",
+                                         "fig6_1mode" };
+    size_t i;
+
+    (void)state;
+    for (i = 0; i < sizeof names / sizeof names[0]; ++i) {
+        char path[64];
+        snprintf(path, sizeof path, "configs/%s.ini", names[i]);
+        support_load(path, &read_scene, &core_scene, &scene_derived);
+        assert_string_equal(read_scene.params.name, names[i]);
+        assert_int_equal(core_scene.n_modes, read_scene.params.modes);
+        assert_int_equal(scene_derived.modes.n, read_scene.params.modes);
+    }
+}
+
+static void test_fig6_has_the_section8_values(void **state)
+{
+    const scene_params *p = &read_scene.params;
+    char where[SCENE_PATH + 16];
+
+    (void)state;
+    support_load("configs/fig6.ini", &read_scene, &core_scene, &scene_derived);
+    assert_close("frequency", p->frequency, 124.0, 0.0, 1e-15);
+    assert_close("acceleration", p->acceleration, 14.0, 0.0, 1e-15);
+    assert_close("s0", p->s0, 0.3, 0.0, 1e-15);
+    assert_close("t_end", p->t_end, 60.0, 0.0, 1e-15);
+    assert_int_equal(p->modes, 5);
+    assert_int_equal(p->model, BS_MODEL_FREE);
+    assert_close("dt (from the base)", p->dt, 2e-5, 0.0, 1e-15);
+    assert_close("beam length (from the base)", p->beam.length, 0.140, 0.0, 1e-15);
+    assert_close("core dt", core_scene.dt, 2e-5, 0.0, 2.0 * SUPPORT_EPS);
+    /* where each value came from: the file itself, or its base */
+    assert_non_null(strstr(scene_where(&read_scene, "excitation", "frequency", where, sizeof where),
+                           "configs/fig6.ini:"));
+    assert_non_null(strstr(scene_where(&read_scene, "numerics", "dt", where, sizeof where),
+                           "configs/mssp2023.ini:"));
+}
+
+static void test_fig6_1mode_has_one_mode_and_fig6_values(void **state)
+{
+    const scene_params *p = &read_scene.params;
+    char where[SCENE_PATH + 16];
+
+    (void)state;
+    support_load("configs/fig6_1mode.ini", &read_scene, &core_scene, &scene_derived);
+    assert_int_equal(p->modes, 1);
+    assert_int_equal(core_scene.n_modes, 1);
+    assert_close("frequency (base fig6)", p->frequency, 124.0, 0.0, 1e-15);
+    assert_close("acceleration (base fig6)", p->acceleration, 14.0, 0.0, 1e-15);
+    assert_close("t_end (base fig6)", p->t_end, 60.0, 0.0, 1e-15);
+    assert_string_equal(p->name, "fig6_1mode");
+    assert_non_null(strstr(scene_where(&read_scene, "numerics", "modes", where, sizeof where),
+                           "configs/fig6_1mode.ini:"));
+    assert_non_null(strstr(scene_where(&read_scene, "excitation", "frequency", where, sizeof where),
+                           "configs/fig6.ini:"));
+}
+
+static void test_name_defaults_to_file_name_without_ini(void **state)
+{
+    char path[SCENE_PATH];
+
+    (void)state;
+    write_field_scene("numerics", "modes", "5");
+    copy_file(field_path, "plain.ini");
+    assert_int_equal(load_tmp("plain.ini", path, sizeof path), 0);
+    assert_string_equal(read_scene.params.name, "plain");
+    /* only the .ini goes, not everything after the first dot */
+    copy_file(field_path, "v1.5.ini");
+    assert_int_equal(load_tmp("v1.5.ini", path, sizeof path), 0);
+    assert_string_equal(read_scene.params.name, "v1.5");
+    /* a name in the file wins */
+    assert_int_equal(load_field("scene", "name", "my scene"), 0);
+    assert_string_equal(read_scene.params.name, "my scene");
+}
+
+/* ---- unknown, duplicate and overridden keys --------------------------- */
+
+static void test_unknown_section_is_refused(void **state)
+{
+    char where[SCENE_PATH + 16];
+    (void)state;
+    assert_int_equal(load_field("beams", "length", "0.14"), -1);
+    place(where, sizeof where, field_path, FIELD_LINE);
+    assert_message_has(where, "unknown", "[beams] length");
+}
+
+static void test_unknown_key_is_refused(void **state)
+{
+    char where[SCENE_PATH + 16];
+    (void)state;
+    assert_int_equal(load_field("beam", "lenght", "0.14"), -1);
+    place(where, sizeof where, field_path, FIELD_LINE);
+    assert_message_has(where, "unknown", "[beam] lenght");
+}
+
+static void test_key_outside_a_section_is_refused(void **state)
+{
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    (void)state;
+    write_file("nosection.ini", "dt = 1e-5\n[scene]\nbase = mssp2023.ini\n");
+    assert_int_equal(load_tmp("nosection.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 1);
+    assert_message_has(where, "unknown", "dt");
+}
+
+static void test_key_set_twice_names_both_lines(void **state)
+{
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    (void)state;
+    write_file("twice.ini", "[scene]\n"               /* 1 */
+                            "base = mssp2023.ini\n"   /* 2 */
+                            "[excitation]\n"          /* 3 */
+                            "frequency = 124\n"       /* 4 */
+                            "acceleration = 14\n"     /* 5 */
+                            "[run]\n"                 /* 6 */
+                            "s0 = 0.3\n"              /* 7 */
+                            "t_end = 1\n"             /* 8 */
+                            "[excitation]\n"          /* 9 */
+                            "frequency = 125\n");     /* 10 */
+    assert_int_equal(load_tmp("twice.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 10);
+    assert_message_has(where, "[excitation] frequency", "twice", "line 4");
+}
+
+static void test_base_set_twice_names_both_lines(void **state)
+{
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    (void)state;
+    copy_file("configs/fig6.ini", "fig6.ini");
+    write_file("twobases.ini", "[scene]\n"               /* 1 */
+                               "base = fig6.ini\n"       /* 2 */
+                               "base = mssp2023.ini\n"   /* 3 */
+                               "[run]\n"                 /* 4 */
+                               "s0 = 0.3\n"              /* 5 */
+                               "t_end = 1\n"             /* 6 */
+                               "[excitation]\n"          /* 7 */
+                               "frequency = 124\n"       /* 8 */
+                               "acceleration = 14\n");   /* 9 */
+    assert_int_equal(load_tmp("twobases.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 3);
+    assert_message_has(where, "[scene] base", "twice", "line 2");
+}
+
+static void test_file_value_overrides_its_base(void **state)
+{
+    char base_path[SCENE_PATH];
+    char expected[SCENE_PATH + 16];
+    char where[SCENE_PATH + 16];
+
+    (void)state;
+    assert_int_equal(load_field("beam", "length", "0.15"), 0);
+    assert_close("overridden length", read_scene.params.beam.length, 0.15, 0.0, 1e-15);
+    snprintf(expected, sizeof expected, "%s:%d", field_path, FIELD_LINE);
+    assert_string_equal(scene_where(&read_scene, "beam", "length", where, sizeof where), expected);
+    /* the rest of [beam] still comes from the base */
+    tmp_path(base_path, sizeof base_path, "mssp2023.ini");
+    assert_close("density from the base", read_scene.params.beam.density, 7683.0, 0.0, 1e-15);
+    snprintf(expected, sizeof expected, "%s:%d", base_path, line_of(base_path, "density"));
+    assert_string_equal(scene_where(&read_scene, "beam", "density", where, sizeof where), expected);
+}
+
+/* ---- values ----------------------------------------------------------- */
+
+static void test_real_field_refuses_non_numbers(void **state)
+{
+    (void)state;
+    assert_field_refused("beam", "length", "abc");
+    assert_field_refused("beam", "length", "1.0x");
+    assert_field_refused("beam", "length", "");
+    assert_field_refused("contact", "friction", ""); /* not read as 0, which is allowed */
+    assert_field_refused("beam", "length", "0.14 m");
+    assert_field_refused("numerics", "dt", "1e-5s");
+}
+
+static void test_real_field_refuses_non_finite(void **state)
+{
+    (void)state;
+    assert_field_refused("beam", "length", "nan");
+    assert_field_refused("beam", "length", "inf");
+    assert_field_refused("beam", "length", "-inf");
+    assert_field_refused("beam", "length", "1e999"); /* overflows to inf */
+    assert_field_refused("slider", "com_offset", "inf"); /* range (-inf, inf) still wants finite */
+    assert_message_has("not finite");
+}
+
+static void test_integer_field_refuses_non_integers(void **state)
+{
+    (void)state;
+    assert_field_refused("numerics", "modes", "2.5");
+    assert_field_refused("numerics", "modes", "abc");
+    assert_field_refused("numerics", "modes", "");
+    assert_field_refused("numerics", "modes", "5x");
+}
+
+static void test_out_of_range_values_are_refused(void **state)
+{
+    char too_many[16];
+
+    (void)state;
+    snprintf(too_many, sizeof too_many, "%d", BS_MAX_MODES + 1);
+    assert_field_refused("beam", "length", "0");
+    assert_field_refused("beam", "length", "-1");
+    assert_field_refused("slider", "mass", "0");
+    assert_field_refused("slider", "play_ratio", "0.99");
+    assert_field_refused("contact", "friction", "-0.1");
+    assert_field_refused("contact", "restitution", "1.5");
+    assert_field_refused("contact", "restitution", "-0.1");
+    assert_field_refused("numerics", "modes", "0");
+    assert_field_refused("numerics", "modes", too_many);
+    assert_field_refused("numerics", "dt", "0");
+    assert_field_refused("numerics", "dt", "-1e-5");
+    assert_field_refused("beam", "damping_ratio", "1");
+    assert_field_refused("run", "s0", "1.5");
+    assert_field_refused("run", "model", "fixed");
+    assert_message_has("one of: free, pcs");
+}
+
+/* The other side of each range edge above: these must load. */
+static void test_values_on_the_range_edges_are_accepted(void **state)
+{
+    const scene_params *p = &read_scene.params;
+    char most[16];
+
+    (void)state;
+    snprintf(most, sizeof most, "%d", BS_MAX_MODES);
+    assert_field_accepted("slider", "play_ratio", "1");
+    assert_close("play_ratio", p->play_ratio, 1.0, 0.0, 0.0);
+    assert_field_accepted("contact", "friction", "0");
+    assert_close("friction", p->mu, 0.0, 0.0, 0.0);
+    assert_field_accepted("contact", "restitution", "0");
+    assert_field_accepted("contact", "restitution", "1");
+    assert_close("restitution", p->e_n, 1.0, 0.0, 0.0);
+    assert_field_accepted("numerics", "modes", "1");
+    assert_field_accepted("numerics", "modes", most);
+    assert_int_equal(p->modes, BS_MAX_MODES);
+    assert_field_accepted("beam", "damping_ratio", "0");
+    assert_field_accepted("beam", "damping_ratio", "0.999");
+    assert_field_accepted("run", "s0", "0");
+    assert_field_accepted("run", "s0", "1");
+    assert_close("s0", p->s0, 1.0, 0.0, 0.0);
+    assert_field_accepted("slider", "com_offset", "-4e-3");
+    assert_close("com_offset", p->com_offset, -4e-3, 0.0, 1e-15);
+    assert_field_accepted("run", "model", "pcs");
+    assert_int_equal(p->model, BS_MODEL_PCS);
+    assert_field_accepted("numerics", "dt", "1e-5 ; an inline comment");
+    assert_close("dt", p->dt, 1e-5, 0.0, 1e-15);
+}
+
+/* ---- missing things --------------------------------------------------- */
+
+static void test_missing_required_field_is_named(void **state)
+{
+    char path[SCENE_PATH];
+    char range[96];
+
+    (void)state;
+    write_file("no_t_end.ini", "[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\n"
+                               "acceleration = 14\n[run]\ns0 = 0.3\n");
+    assert_int_equal(load_tmp("no_t_end.ini", path, sizeof path), -1);
+    range_text("run", "t_end", range, sizeof range);
+    assert_message_has(path, "missing", "[run] t_end", range);
+}
+
+static void test_missing_base_file_is_named(void **state)
+{
+    char path[SCENE_PATH];
+    char base_path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+
+    (void)state;
+    write_file("nobase.ini", "[scene]\nbase = nope.ini\n[excitation]\nfrequency = 124\n"
+                             "acceleration = 14\n[run]\ns0 = 0.3\nt_end = 1\n");
+    assert_int_equal(load_tmp("nobase.ini", path, sizeof path), -1);
+    tmp_path(base_path, sizeof base_path, "nope.ini");
+    place(where, sizeof where, path, 2); /* the line that names the base */
+    assert_message_has(base_path, where, "[scene] base");
+}
+
+static void test_file_that_does_not_exist_is_named(void **state)
+{
+    char path[SCENE_PATH];
+    (void)state;
+    assert_int_equal(load_tmp("absent.ini", path, sizeof path), -1);
+    assert_message_has(path);
+}
+
+static void test_base_cycle_is_refused(void **state)
+{
+    char path[SCENE_PATH];
+    (void)state;
+    write_file("loop.ini", "[scene]\nbase = loop.ini\n");
+    assert_int_equal(load_tmp("loop.ini", path, sizeof path), -1);
+    assert_message_has(path, "base");
+    write_file("ping.ini", "[scene]\nbase = pong.ini\n");
+    write_file("pong.ini", "[scene]\nbase = ping.ini\n");
+    assert_int_equal(load_tmp("ping.ini", path, sizeof path), -1);
+    assert_message_has(tmp_dir, "base");
+}
+
+static void test_error_in_the_base_names_the_base(void **state)
+{
+    char path[SCENE_PATH];
+    char base_path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+
+    (void)state;
+    write_file("badbase.ini", "[beam]\nlength = -0.14\n");
+    write_file("onbadbase.ini", "[scene]\nbase = badbase.ini\n");
+    assert_int_equal(load_tmp("onbadbase.ini", path, sizeof path), -1);
+    tmp_path(base_path, sizeof base_path, "badbase.ini");
+    place(where, sizeof where, base_path, 2);
+    assert_message_has(where, "[beam] length");
+}
+
+/* ---- syntax ----------------------------------------------------------- */
+
+static void test_unclosed_section_is_a_syntax_error(void **state)
+{
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    (void)state;
+    write_file("section.ini", "[scene]\nbase = mssp2023.ini\n[clamps\nrotational_stiffness = 125\n");
+    assert_int_equal(load_tmp("section.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 3);
+    assert_message_has(where, "syntax");
+}
+
+static void test_text_without_equals_is_a_syntax_error(void **state)
+{
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    (void)state;
+    write_file("text.ini", "[scene]\nbase = mssp2023.ini\n\n; a comment\njusttext\n[run]\ns0 = 0.3\n");
+    assert_int_equal(load_tmp("text.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 5);
+    assert_message_has(where, "syntax");
+}
+
+/* inih reads lines of at most ini_max_line - 3 characters; a longer one
+ * must be refused, not cut into two lines. */
+static void test_over_long_line_is_refused_not_split(void **state)
+{
+    char text[1024];
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    size_t used;
+
+    (void)state;
+    /* a valid number padded with zeros: the first part alone would parse */
+    used = (size_t)snprintf(text, sizeof text, "[scene]\nbase = mssp2023.ini\n[beam]\nlength = 0.14");
+    memset(text + used, '0', 240);
+    used += 240;
+    snprintf(text + used, sizeof text - used, "\n[excitation]\nfrequency = 124\nacceleration = 14\n"
+                                              "[run]\ns0 = 0.3\nt_end = 1\n");
+    write_file("long.ini", text);
+    assert_int_equal(load_tmp("long.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 4);
+    assert_message_has(where, "longer");
+
+    /* a comment whose cut-off tail would read as "dt = 1" */
+    used = (size_t)snprintf(text, sizeof text, "[scene]\nbase = mssp2023.ini\n[numerics]\n;");
+    memset(text + used, 'x', 250);
+    used += 250;
+    snprintf(text + used, sizeof text - used, "dt = 1\n[excitation]\nfrequency = 124\n"
+                                              "acceleration = 14\n[run]\ns0 = 0.3\nt_end = 1\n");
+    write_file("longcomment.ini", text);
+    assert_int_equal(load_tmp("longcomment.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 4);
+    assert_message_has(where, "longer");
+}
+
+static void test_line_at_the_length_limit_is_accepted(void **state)
+{
+    char text[1024];
+    char path[SCENE_PATH];
+    size_t used;
+
+    (void)state;
+    used = (size_t)snprintf(text, sizeof text, "[scene]\nbase = mssp2023.ini\n;");
+    memset(text + used, 'x', 196); /* 197 characters with the ';' */
+    used += 196;
+    snprintf(text + used, sizeof text - used, "\n[excitation]\nfrequency = 124\nacceleration = 14\n"
+                                              "[run]\ns0 = 0.3\nt_end = 1\n");
+    write_file("limit.ini", text);
+    if (load_tmp("limit.ini", path, sizeof path) != 0) {
+        print_error("%s\n", message);
+        fail();
+    }
+}
+
+/* ---- scene_build: checks across fields -------------------------------- */
+
+static void test_dt_above_explicit_limit_is_refused(void **state)
+{
+    char where[SCENE_PATH + 16];
+    char allowed[64];
+
+    (void)state;
+    assert_int_equal(load_field("numerics", "dt", "1e-4"), 0);
+    assert_int_equal(read_scene.params.modes, 5);
+    message[0] = '\0';
+    assert_int_equal(scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message), -1);
+    assert_int_equal(scene_derived.modes.n, 5);
+    /* omega_5 = 2 pi 3500 Hz: 2 / omega_5 = 9.09e-5 s */
+    snprintf(allowed, sizeof allowed, "dt < %.4g s", 2.0 / scene_derived.modes.omega[4]);
+    assert_close("2 / omega_max", 2.0 / scene_derived.modes.omega[4], 9.094e-5, 0.0, 1e-3);
+    snprintf(where, sizeof where, "%s:%d", field_path, FIELD_LINE);
+    assert_message_has(where, "[numerics] dt", "explicit limit", allowed);
+}
+
+static void test_dt_below_explicit_limit_builds(void **state)
+{
+    (void)state;
+    assert_int_equal(load_field("numerics", "dt", "9e-5"), 0);
+    support_build(&read_scene, &core_scene, &scene_derived);
+    assert_close("core dt", core_scene.dt, 9e-5, 0.0, 2.0 * SUPPORT_EPS);
+}
+
+static void test_free_start_inside_a_clamp_is_refused(void **state)
+{
+    char where[SCENE_PATH + 16];
+    char allowed[64];
+    const double low = 0.5 * 10e-3 / 0.140; /* B/2 / L of mssp2023 */
+
+    (void)state;
+    assert_int_equal(load_field("run", "s0", "0.01"), 0);
+    message[0] = '\0';
+    assert_int_equal(scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message), -1);
+    snprintf(where, sizeof where, "%s:%d", field_path, FIELD_LINE);
+    snprintf(allowed, sizeof allowed, "[%.6g, %.6g]", low, 1.0 - low);
+    assert_message_has(where, "[run] s0", "clamp", allowed);
+}
+
+static void test_pcs_start_inside_a_clamp_builds(void **state)
+{
+    (void)state;
+    assert_int_equal(load_field("run", "s0", "0.01"), 0);
+    assert_int_equal(scene_set(&read_scene, "run", "model", "pcs", "--model", message, sizeof message), 0);
+    support_build(&read_scene, &core_scene, &scene_derived);
+}
+
+static void test_slot_as_wide_as_the_beam_is_refused(void **state)
+{
+    char where[SCENE_PATH + 16];
+
+    (void)state;
+    assert_int_equal(load_field("slider", "slot_width", "0.140"), 0);
+    message[0] = '\0';
+    assert_int_equal(scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message), -1);
+    snprintf(where, sizeof where, "%s:%d", field_path, FIELD_LINE);
+    assert_message_has(where, "[slider] slot_width", "[beam] length");
+}
+
+/* ---- scene_set: command-line overrides -------------------------------- */
+
+static void test_override_applies_a_valid_value(void **state)
+{
+    char where[SCENE_PATH + 16];
+    int files;
+
+    (void)state;
+    support_load("configs/fig6.ini", &read_scene, &core_scene, &scene_derived);
+    assert_int_equal(scene_set(&read_scene, "numerics", "dt", "1e-5", "--dt", message, sizeof message), 0);
+    assert_close("dt", read_scene.params.dt, 1e-5, 0.0, 1e-15);
+    assert_string_equal(scene_where(&read_scene, "numerics", "dt", where, sizeof where), "--dt");
+    files = read_scene.file_count;
+    /* the same option again replaces the value and reuses its entry */
+    assert_int_equal(scene_set(&read_scene, "numerics", "dt", "1.5e-5", "--dt", message, sizeof message), 0);
+    assert_close("dt", read_scene.params.dt, 1.5e-5, 0.0, 1e-15);
+    assert_int_equal(read_scene.file_count, files);
+    support_build(&read_scene, &core_scene, &scene_derived);
+    assert_close("core dt", core_scene.dt, 1.5e-5, 0.0, 2.0 * SUPPORT_EPS);
+}
+
+static void test_override_refuses_a_bad_value_naming_the_option(void **state)
+{
+    char range[96];
+
+    (void)state;
+    support_load("configs/fig6.ini", &read_scene, &core_scene, &scene_derived);
+    range_text("numerics", "dt", range, sizeof range);
+    message[0] = '\0';
+    assert_int_equal(scene_set(&read_scene, "numerics", "dt", "abc", "--dt", message, sizeof message), -1);
+    assert_message_has("--dt", "abc", range);
+    message[0] = '\0';
+    assert_int_equal(scene_set(&read_scene, "numerics", "dt", "0", "--dt", message, sizeof message), -1);
+    assert_message_has("--dt", range);
+    assert_close("dt unchanged", read_scene.params.dt, 2e-5, 0.0, 1e-15);
+    range_text("run", "t_end", range, sizeof range);
+    message[0] = '\0';
+    assert_int_equal(scene_set(&read_scene, "run", "t_end", "-1", "--t-end", message, sizeof message), -1);
+    assert_message_has("--t-end", range);
+    assert_close("t_end unchanged", read_scene.params.t_end, 60.0, 0.0, 1e-15);
+    message[0] = '\0';
+    assert_int_equal(scene_set(&read_scene, "run", "model", "fixed", "--model", message, sizeof message), -1);
+    assert_message_has("--model", "one of: free, pcs");
+}
+
+static void test_override_beyond_explicit_limit_names_the_option(void **state)
+{
+    (void)state;
+    support_load("configs/fig6.ini", &read_scene, &core_scene, &scene_derived);
+    assert_int_equal(scene_set(&read_scene, "numerics", "dt", "1e-4", "--dt", message, sizeof message), 0);
+    message[0] = '\0';
+    assert_int_equal(scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message), -1);
+    assert_message_has("--dt", "[numerics] dt", "explicit limit");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_shipped_scenes_load_and_build),
+        cmocka_unit_test(test_fig6_has_the_section8_values),
+        cmocka_unit_test(test_fig6_1mode_has_one_mode_and_fig6_values),
+        cmocka_unit_test(test_name_defaults_to_file_name_without_ini),
+        cmocka_unit_test(test_unknown_section_is_refused),
+        cmocka_unit_test(test_unknown_key_is_refused),
+        cmocka_unit_test(test_key_outside_a_section_is_refused),
+        cmocka_unit_test(test_key_set_twice_names_both_lines),
+        cmocka_unit_test(test_base_set_twice_names_both_lines),
+        cmocka_unit_test(test_file_value_overrides_its_base),
+        cmocka_unit_test(test_real_field_refuses_non_numbers),
+        cmocka_unit_test(test_real_field_refuses_non_finite),
+        cmocka_unit_test(test_integer_field_refuses_non_integers),
+        cmocka_unit_test(test_out_of_range_values_are_refused),
+        cmocka_unit_test(test_values_on_the_range_edges_are_accepted),
+        cmocka_unit_test(test_missing_required_field_is_named),
+        cmocka_unit_test(test_missing_base_file_is_named),
+        cmocka_unit_test(test_file_that_does_not_exist_is_named),
+        cmocka_unit_test(test_base_cycle_is_refused),
+        cmocka_unit_test(test_error_in_the_base_names_the_base),
+        cmocka_unit_test(test_unclosed_section_is_a_syntax_error),
+        cmocka_unit_test(test_text_without_equals_is_a_syntax_error),
+        cmocka_unit_test(test_over_long_line_is_refused_not_split),
+        cmocka_unit_test(test_line_at_the_length_limit_is_accepted),
+        cmocka_unit_test(test_dt_above_explicit_limit_is_refused),
+        cmocka_unit_test(test_dt_below_explicit_limit_builds),
+        cmocka_unit_test(test_free_start_inside_a_clamp_is_refused),
+        cmocka_unit_test(test_pcs_start_inside_a_clamp_builds),
+        cmocka_unit_test(test_slot_as_wide_as_the_beam_is_refused),
+        cmocka_unit_test(test_override_applies_a_valid_value),
+        cmocka_unit_test(test_override_refuses_a_bad_value_naming_the_option),
+        cmocka_unit_test(test_override_beyond_explicit_limit_names_the_option),
+    };
+    return cmocka_run_group_tests(tests, make_tmp_dir, remove_tmp_dir);
+}
