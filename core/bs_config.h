@@ -14,7 +14,8 @@
 #endif
 
 /* Mode shapes are piecewise polynomials of this many coefficients (degree 7),
- * fitted on the host; see core/bs_shape.h. */
+ * fitted on the host; see core/bs_shape.h (whose Horner loop is written out
+ * for exactly 8). */
 #define BS_SHAPE_COEFS 8
 
 /* Largest number of polynomial pieces over the beam length. */

@@ -35,8 +35,9 @@
  * Warm start: P comes in holding each contact's percussion of the last step.
  * Stop: after each sweep (and subspace step) the natural-map residual of the
  * current P,
- *   e = sum_i | P_i - prox(P_i - r_i xi_i) |,
- * is computed; the solve stops when e <= tol_rel |P| + tol_abs (converged),
+ *   e = sum_i | P_i - prox(P_i - r_i xi_i) |_1,
+ * is computed (1-norms: no square roots; the reference's criterion leaves the
+ * norm open); the solve stops when e <= tol_rel |P|_1 + tol_abs (converged),
  * when max_sweeps sweeps are done, or when a sweep did not lower e (stalled:
  * e is at the floor the precision reaches for this G, which in float can lie
  * above the tolerance for the nearly singular corner pairs). The residual
@@ -44,7 +45,11 @@
  * (MODEL.md 9.5: report it, never hide it).
  */
 #include "bs_pgs.h"
-#include "bs_port.h"
+
+static bs_real magnitude(bs_real value)
+{
+    return value < BS_R(0.0) ? -value : value;
+}
 
 static bs_real clamp(bs_real value, bs_real low, bs_real high)
 {
@@ -140,22 +145,19 @@ static void solve_contact(bs_contact_set *set, int a)
 bs_real bs_pgs_residual(const bs_contact_set *set, bs_real *norm)
 {
     bs_real residual = BS_R(0.0);
-    bs_real norm_sq = BS_R(0.0);
+    bs_real size = BS_R(0.0);
     int a;
 
     for (a = 0; a < set->count; ++a) {
         const bs_real *p = &set->percussion[2 * a];
         bs_real xi[2];
         bs_real projected[2];
-        bs_real e_n, e_t;
         velocity(set, a, xi);
         prox(set->mu[a], step_size(set, a), xi, p, projected);
-        e_n = p[0] - projected[0];
-        e_t = p[1] - projected[1];
-        residual += bs_sqrt(e_n * e_n + e_t * e_t);
-        norm_sq += p[0] * p[0] + p[1] * p[1];
+        residual += magnitude(p[0] - projected[0]) + magnitude(p[1] - projected[1]);
+        size += magnitude(p[0]) + magnitude(p[1]);
     }
-    *norm = bs_sqrt(norm_sq);
+    *norm = size;
     return residual;
 }
 
@@ -178,6 +180,7 @@ static int subspace_solve(const bs_contact_set *set, const int *mode, bs_real *t
 {
     const int rows = 2 * set->count;
     bs_real a[2 * BS_MAX_CONTACTS][2 * BS_MAX_CONTACTS + 1]; /* [A | b] */
+    bs_real inverse[2 * BS_MAX_CONTACTS];                      /* 1 / pivots */
     int i, j, col;
 
     for (i = 0; i < set->count; ++i) {
@@ -218,8 +221,9 @@ static int subspace_solve(const bs_contact_set *set, const int *mode, bs_real *t
                 a[col][j] = a[pivot][j];
                 a[pivot][j] = swap;
             }
+        inverse[col] = BS_R(1.0) / a[col][col]; /* one division per pivot */
         for (i = col + 1; i < rows; ++i) {
-            const bs_real factor = a[i][col] / a[col][col];
+            const bs_real factor = a[i][col] * inverse[col];
             for (j = col; j <= rows; ++j)
                 a[i][j] -= factor * a[col][j];
         }
@@ -228,7 +232,7 @@ static int subspace_solve(const bs_contact_set *set, const int *mode, bs_real *t
         bs_real value = a[i][rows];
         for (j = i + 1; j < rows; ++j)
             value -= a[i][j] * trial[j];
-        trial[i] = value / a[i][i];
+        trial[i] = value * inverse[i];
     }
     return 0;
 }

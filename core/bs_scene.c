@@ -57,6 +57,11 @@ static int check_geometry(const bs_scene *s, const char **field)
 
     if (!is_finite(s->length) || !(s->length > BS_R(0.0)))
         return fail(field, "length");
+    /* shape_scale must be shape_pieces / length (to rounding) */
+    if (!is_finite(s->shape_scale)
+        || !(s->shape_scale * s->length >= (bs_real)s->shape_pieces * (BS_R(1.0) - BS_R(1e-6))
+             && s->shape_scale * s->length <= (bs_real)s->shape_pieces * (BS_R(1.0) + BS_R(1e-6))))
+        return fail(field, "shape_scale");
     if (!is_finite(s->half_thickness) || !(s->half_thickness > BS_R(0.0)))
         return fail(field, "half_thickness");
     for (i = 0; i < BS_CORNERS; ++i)

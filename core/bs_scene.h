@@ -34,6 +34,7 @@ typedef struct bs_scene {
      * with local coordinate u in [-1, 1]: phi_k = sum_c shape_coef[j][k][c] u^c.
      * Fitted on the host in double from the cancellation-free closed form. */
     int shape_pieces;                    /* 1 .. BS_SHAPE_MAX_PIECES */
+    bs_real shape_scale;                 /* shape_pieces / length [1/m] */
     bs_real shape_coef[BS_SHAPE_MAX_PIECES][BS_MAX_MODES][BS_SHAPE_COEFS];
 
     /* Geometry [m]. */

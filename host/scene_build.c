@@ -78,6 +78,7 @@ static void fill_modes(const scene_params *p, const scene_model *model, bs_scene
     /* a hair above the true value: the stability check needs an upper bound */
     scene->stretch_norm = (bs_real)(largest_eigenvalue(stretch, modes->n) * (1.0 + 1e-6));
     scene->shape_pieces = model->fit.pieces;
+    scene->shape_scale = (bs_real)(model->fit.pieces / p->beam.length);
     for (j = 0; j < model->fit.pieces; ++j)
         for (i = 0; i < modes->n; ++i)
             for (c = 0; c < BS_SHAPE_COEFS; ++c)

@@ -74,7 +74,7 @@ static int case_to_set(const cJSON *c, bs_contact_set *set, double *expected)
 }
 
 /* Natural-map residual of set->percussion, written out here in double
- * independently of bs_pgs.c: sum_i |P_i - prox(P_i - r_i xi_i)|. *rounding
+ * independently of bs_pgs.c: sum_i |P_i - prox(P_i - r_i xi_i)|_1. *rounding
  * receives how far the solver's own evaluation in bs_real may differ: the
  * rounding of xi = G P + c, 2n + 1 terms, times r, a few ulps each. */
 static double natural_residual(const bs_contact_set *set, double *rounding)
@@ -99,7 +99,7 @@ static double natural_residual(const bs_contact_set *set, double *rounding)
         proj_n = fmax(0.0, p_n - r * xi_n);
         limit = (double)set->mu[a] * proj_n;
         proj_t = fmin(limit, fmax(-limit, p_t - r * xi_t));
-        residual += hypot(p_n - proj_n, p_t - proj_t);
+        residual += fabs(p_n - proj_n) + fabs(p_t - proj_t);
     }
     return residual;
 }
