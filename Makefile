@@ -4,6 +4,7 @@
 #   make run          build and run the fig6 scene (60 s), print its summary
 #   make test         build and run every test, float and double
 #   make bench        steps per second -> docs/performance.md
+#   make fig6-report  the signature move in numbers -> docs/validation.md
 #   make clean
 #
 # Knobs (make VAR=value):
@@ -43,7 +44,7 @@ TEST_LIBS := -lcmocka -lcjson $(HOST_LIBS)
 BUILD_PACKAGES := gcc make libc6-dev libinih-dev
 TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev libcjson-dev binutils
 
-.PHONY: all run test test-one bench clean deps-build deps-test
+.PHONY: all run test test-one bench fig6-report clean deps-build deps-test
 
 all: $(BUILD)/beamslider
 
@@ -85,6 +86,11 @@ test: deps-test
 	$(MAKE) --no-print-directory REAL=double test-one
 	$(MAKE) --no-print-directory REAL=float test-one
 	@echo "make test: all tests passed (double and float)"
+
+fig6-report:
+	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
+	sh host/fig6_report.sh
 
 bench:
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider

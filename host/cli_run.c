@@ -11,6 +11,7 @@
 typedef struct run_cli {
     const char *scene_path;
     const char *out_path;
+    const char *periods_path;
     long every;
 } run_cli;
 
@@ -37,6 +38,7 @@ static int parse_options(int argc, char **argv, run_cli *cli, scene_file *file)
     }
     cli->scene_path = argv[0];
     cli->out_path = NULL;
+    cli->periods_path = NULL;
     cli->every = 1;
     if (scene_load(cli->scene_path, file, err, sizeof err) != 0) {
         cli_error("%s", err);
@@ -58,6 +60,8 @@ static int parse_options(int argc, char **argv, run_cli *cli, scene_file *file)
             }
         } else if (!strcmp(option, "--out")) {
             cli->out_path = argv[i + 1];
+        } else if (!strcmp(option, "--periods")) {
+            cli->periods_path = argv[i + 1];
         } else if (!strcmp(option, "--every")) {
             char *end;
             errno = 0;
@@ -90,6 +94,41 @@ static void print_summary(const scene_file *file, const bs_scene *scene, const r
            r->contact_steps ? (double)r->total_sweeps / (double)r->contact_steps : 0.0, r->hash);
 }
 
+static int open_output(const char *path, FILE **file)
+{
+    *file = NULL;
+    if (!path)
+        return 0;
+    *file = fopen(path, "w");
+    if (!*file) {
+        cli_error("cannot open %s for writing: %s", path, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+/* Closes an output; reports and returns -1 if it misses anything: its own
+ * write failed, or the run stopped early because another one did. */
+static int close_output(const char *path, FILE *file, const run_result *result)
+{
+    int own_error;
+    if (!file)
+        return 0;
+    errno = result->write_errno;
+    own_error = ferror(file) != 0;
+    own_error |= fclose(file) != 0;
+    if (own_error) {
+        cli_error("writing %s failed: %s; the file is incomplete", path,
+                  errno ? strerror(errno) : "write error");
+        return -1;
+    }
+    if (result->write_failed) {
+        cli_error("%s holds the run only up to t = %.6f s: it stopped at a write error", path, result->t);
+        return -1;
+    }
+    return 0;
+}
+
 int cli_run(int argc, char **argv)
 {
     static scene_file file;   /* static: large */
@@ -99,7 +138,7 @@ int cli_run(int argc, char **argv)
     run_options options;
     run_result result;
     char err[1024];
-    FILE *csv = NULL;
+    FILE *csv, *periods;
     int failed;
 
     if (parse_options(argc, argv, &cli, &file) != 0)
@@ -108,12 +147,13 @@ int cli_run(int argc, char **argv)
         cli_error("%s", err);
         return CLI_USAGE;
     }
-    if (cli.out_path) { /* opened only once the input is known to be good */
-        csv = fopen(cli.out_path, "w");
-        if (!csv) {
-            cli_error("cannot open %s for writing: %s", cli.out_path, strerror(errno));
-            return CLI_FAILED;
-        }
+    /* outputs are opened only once the input is known to be good */
+    if (open_output(cli.out_path, &csv) != 0)
+        return CLI_FAILED;
+    if (open_output(cli.periods_path, &periods) != 0) {
+        if (csv)
+            fclose(csv);
+        return CLI_FAILED;
     }
     options.model = (bs_model)file.params.model;
     options.s0 = file.params.s0;
@@ -121,13 +161,17 @@ int cli_run(int argc, char **argv)
     options.dt = file.params.dt;
     options.every = cli.every;
     options.csv = csv;
+    options.periods = periods;
     options.show_progress = 1;
     failed = run_scene(&scene, &options, &result) != 0;
-    if (csv && fclose(csv) != 0)
-        result.write_failed = failed = 1;
-    if (result.write_failed)
-        cli_error("writing %s failed: %s; the file is incomplete", cli.out_path, strerror(errno));
-    else if (result.status != BS_OK)
+    /* a write error ends the run: then both files are reported incomplete */
+    {
+        const int csv_lost = close_output(cli.out_path, csv, &result) != 0;
+        const int periods_lost = close_output(cli.periods_path, periods, &result) != 0;
+        if (csv_lost || periods_lost)
+            result.write_failed = failed = 1;
+    }
+    if (result.status != BS_OK)
         cli_error("%s: stopped at t = %.6f s (step %llu): %s; state and CSV kept up to the last good step",
                   file.params.name, result.t, (unsigned long long)result.steps, bs_status_text(result.status));
     print_summary(&file, &scene, &result);

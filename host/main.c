@@ -9,8 +9,9 @@ static const char usage[] =
     "usage: beamslider COMMAND ...\n"
     "  modes SCENE.ini        modal data: f_k [Hz], gamma_k, phi_k(4/7) per mode\n"
     "  run SCENE.ini [--model free|pcs] [--s0 S] [--t-end T] [--dt DT] [--pgs-iters K]\n"
-    "                [--out FILE.csv] [--every N]\n"
-    "                         simulate; CSV rows every N steps, JSON summary on stdout\n"
+    "                [--out FILE.csv] [--every N] [--periods FILE.csv]\n"
+    "                         simulate; CSV rows every N steps, one row per excitation\n"
+    "                         period with --periods, JSON summary on stdout\n"
     "core precision: " BS_REAL_NAME "\n";
 
 void cli_error(const char *format, ...)

@@ -3,15 +3,19 @@
  * Time is step * dt in double (never accumulated). The amplitude reported is
  * the mean over the last RUN_AMP_PERIODS complete excitation periods of the
  * per-period half peak-to-peak of w(4L/7) (core/bs_monitor.c), divided by h.
+ * The per-period CSV has one row per completed excitation period: its end
+ * time, that amplitude / h, s and the slider displacement over it / L.
  */
 #include "run.h"
 
+#include <errno.h>
 #include <math.h>
 #include "bs_monitor.h"
 #include "bs_platform.h"
 #include "progress.h"
 
 const char run_csv_header[] = "t,w_sensor,s,z_c,beta,contacts,pgs_iters,pgs_residual\n";
+const char run_periods_header[] = "t,amp_h,s,ds\n";
 
 static int write_row(FILE *csv, double t, const bs_sim *sim)
 {
@@ -21,6 +25,13 @@ static int write_row(FILE *csv, double t, const bs_sim *sim)
     return fprintf(csv, "%.9f,%.9e,%.9f,%.9e,%.9e,%u,%d,%.3e\n", t, (double)bs_sim_sensor(sim),
                    (double)bs_sim_position(sim), (double)slider[1], (double)slider[2], report->active,
                    report->sweeps, (double)report->residual) < 0;
+}
+
+static void fail_write(run_result *result)
+{
+    if (!result->write_failed)
+        result->write_errno = errno;
+    result->write_failed = 1;
 }
 
 int run_scene(const bs_scene *scene, const run_options *options, run_result *result)
@@ -38,6 +49,7 @@ int run_scene(const bs_scene *scene, const run_options *options, run_result *res
 
     result->status = bs_sim_init(&sim, scene, options->model, (bs_real)options->s0);
     result->write_failed = 0;
+    result->write_errno = 0;
     result->steps = 0;
     result->t = 0.0;
     result->s_final = result->s_min = (double)bs_sim_position(&sim);
@@ -52,7 +64,9 @@ int run_scene(const bs_scene *scene, const run_options *options, run_result *res
         return -1;
     bs_monitor_init(&monitor, &sim);
     if (options->csv && (fputs(run_csv_header, options->csv) < 0 || write_row(options->csv, 0.0, &sim)))
-        result->write_failed = 1;
+        fail_write(result);
+    if (options->periods && fputs(run_periods_header, options->periods) < 0)
+        fail_write(result);
     progress_start(&bar, options->model == BS_MODEL_PCS ? "pcs" : "run");
 
     for (step = 1; step <= steps && !result->write_failed; ++step) {
@@ -76,11 +90,17 @@ int run_scene(const bs_scene *scene, const run_options *options, run_result *res
             result->s_min = s;
             result->t_s_min = (double)step * dt;
         }
-        if (bs_monitor_update(&monitor, &sim))
+        if (bs_monitor_update(&monitor, &sim)) {
             amplitudes[(monitor.periods - 1) % RUN_AMP_PERIODS] = (double)monitor.amplitude;
+            if (options->periods
+                && fprintf(options->periods, "%.9f,%.6e,%.9f,%.6e\n", (double)step * dt,
+                           (double)monitor.amplitude / (2.0 * (double)scene->half_thickness), s,
+                           (double)monitor.transport) < 0)
+                fail_write(result);
+        }
         if (options->csv && step % (uint64_t)options->every == 0
             && write_row(options->csv, (double)step * dt, &sim))
-            result->write_failed = 1;
+            fail_write(result);
         if (step % progress_every == 0) {
             char detail[48];
             snprintf(detail, sizeof detail, "t=%.1f/%.1f s s=%.4f", (double)step * dt,
@@ -99,7 +119,7 @@ int run_scene(const bs_scene *scene, const run_options *options, run_result *res
         result->amp_final_h /= result->amp_periods * 2.0 * (double)scene->half_thickness;
     result->wall_s = bs_platform_seconds() - start;
     result->hash = bs_sim_hash(&sim);
-    if (options->csv && fflush(options->csv) != 0)
-        result->write_failed = 1;
+    if ((options->csv && fflush(options->csv) != 0) || (options->periods && fflush(options->periods) != 0))
+        fail_write(result);
     return result->status == BS_OK && !result->write_failed ? 0 : -1;
 }

@@ -15,12 +15,14 @@ typedef struct run_options {
     double dt;           /* the scene's step in double (time = step * dt) [s] */
     long every;          /* CSV row every this many steps */
     FILE *csv;           /* NULL: no CSV */
+    FILE *periods;       /* NULL: no per-period CSV (run_periods_header) */
     int show_progress;   /* progress bar on a terminal */
 } run_options;
 
 typedef struct run_result {
     bs_status status;          /* BS_OK, or why the run stopped */
-    int write_failed;          /* the CSV could not be written */
+    int write_failed;          /* an output could not be written */
+    int write_errno;           /* errno of the first failed write */
     uint64_t steps;            /* steps completed */
     double t;                  /* simulated time reached [s] */
     double s_final;
@@ -39,7 +41,8 @@ typedef struct run_result {
  * completed and its CSV was written, -1 otherwise (result says why). */
 int run_scene(const bs_scene *scene, const run_options *options, run_result *result);
 
-/* CSV header line of run_scene's rows. */
+/* CSV header lines of run_scene's step rows and per-period rows. */
 extern const char run_csv_header[];
+extern const char run_periods_header[];
 
 #endif

@@ -99,6 +99,9 @@ static void test_free_modes_follow_the_discrete_map_and_the_continuous_law(void 
         const double wh = w * h;
         const measured m = simulate_mode(k, h);
 
+        print_message("mode %d, %s: omega %.6f rad/s (map %.6f, omega_k sqrt(1-D^2) %.6f), "
+                      "decay %.5f 1/s (map %.5f, D omega_k %.5f)\n", k + 1, BS_REAL_NAME, m.omega, omega_map,
+                      w * sqrt(1 - d * d), m.decay, decay_map, d * w);
         /* the scheme, to measurement precision (float: the signal has 24 bits) */
         assert_close("omega: simulated vs discrete map", m.omega, omega_map, 0.0,
                      BS_REAL_FLOAT ? 1e-5 : 1e-7);

@@ -3,6 +3,7 @@
 #include "support.h"
 
 #include <math.h>
+#include "attached.h"
 
 static scene_file file;
 static bs_scene scene;
@@ -85,73 +86,20 @@ static void test_modes_are_normalised_and_satisfy_boundary_conditions(void **sta
     }
 }
 
-/* Lowest eigenfrequency of the beam with the slider rigidly attached at s
- * (Rayleigh-Ritz on the modes): K = diag(omega^2),
- * M = I + m phi phi^T + (J_C + m d^2) phi' phi'^T, by inverse iteration. */
-static double attached_frequency(double s)
-{
-    const int n = model.modes.n;
-    const scene_params *p = &file.params;
-    double k_matrix[BS_MAX_MODES][BS_MAX_MODES], m_matrix[BS_MAX_MODES][BS_MAX_MODES];
-    double phi[BS_MAX_MODES], slope[BS_MAX_MODES], v[BS_MAX_MODES];
-    double lambda = 0.0;
-    int i, j, c, iteration;
-
-    for (i = 0; i < n; ++i) {
-        modal_shape(&model.modes, i, s, &phi[i], &slope[i]);
-        slope[i] /= p->beam.length;
-        v[i] = 1.0;
-    }
-    for (i = 0; i < n; ++i)
-        for (j = 0; j < n; ++j) {
-            k_matrix[i][j] = i == j ? model.modes.omega[i] * model.modes.omega[i] : 0.0;
-            m_matrix[i][j] = (i == j) + p->slider_mass * phi[i] * phi[j]
-                             + (p->slider_inertia + p->slider_mass * p->com_offset * p->com_offset)
-                                   * slope[i] * slope[j];
-        }
-    for (iteration = 0; iteration < 500; ++iteration) { /* solve K y = M v, v = y / |y| */
-        double a[BS_MAX_MODES][BS_MAX_MODES + 1], y[BS_MAX_MODES], norm = 0.0, num = 0.0, den = 0.0;
-        for (i = 0; i < n; ++i) {
-            a[i][n] = 0.0;
-            for (j = 0; j < n; ++j) {
-                a[i][j] = k_matrix[i][j];
-                a[i][n] += m_matrix[i][j] * v[j];
-            }
-        }
-        for (c = 0; c < n; ++c) /* K is diagonal: no pivoting needed */
-            for (i = c + 1; i < n; ++i) {
-                const double f = a[i][c] / a[c][c];
-                for (j = c; j <= n; ++j)
-                    a[i][j] -= f * a[c][j];
-            }
-        for (i = n - 1; i >= 0; --i) {
-            y[i] = a[i][n];
-            for (j = i + 1; j < n; ++j)
-                y[i] -= a[i][j] * y[j];
-            y[i] /= a[i][i];
-            norm += y[i] * y[i];
-        }
-        for (i = 0; i < n; ++i)
-            v[i] = y[i] / sqrt(norm);
-        for (i = 0; i < n; ++i) /* Rayleigh quotient */
-            for (j = 0; j < n; ++j) {
-                num += v[i] * k_matrix[i][j] * v[j];
-                den += v[i] * m_matrix[i][j] * v[j];
-            }
-        lambda = num / den;
-    }
-    return sqrt(lambda) / (2.0 * pi);
-}
-
 static void test_attached_slider_frequency_matches_model_md(void **state)
 {
     /* MODEL.md 8: ~248 Hz at s = 0.05, ~88 Hz at s = 0.5, 124 Hz near s = 0.25
      * (stated to about 2 significant digits: 1 % tolerance) */
     (void)state;
     support_load("configs/fig6.ini", &file, &scene, &model);
-    assert_close("attached f_1 at s = 0.05 [Hz]", attached_frequency(0.05), 248.0, 0.0, 0.01);
-    assert_close("attached f_1 at s = 0.5 [Hz]", attached_frequency(0.5), 88.0, 0.0, 0.01);
-    assert_close("attached f_1 at s = 0.25 [Hz]", attached_frequency(0.25), 124.0, 0.0, 0.01);
+    assert_close("attached f_1 at s = 0.05 [Hz]", attached_frequency(&model.modes, &file.params, 0.05), 248.0,
+                 0.0, 0.01);
+    assert_close("attached f_1 at s = 0.5 [Hz]", attached_frequency(&model.modes, &file.params, 0.5), 88.0,
+                 0.0, 0.01);
+    assert_close("attached f_1 at s = 0.25 [Hz]", attached_frequency(&model.modes, &file.params, 0.25), 124.0,
+                 0.0, 0.01);
+    assert_close("s where attached f_1 = 124 Hz", attached_position(&model.modes, &file.params, 124.0), 0.25,
+                 0.01, 0.0);
 }
 
 static void test_stretch_matrix_follows_symmetry(void **state)

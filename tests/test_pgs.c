@@ -3,8 +3,9 @@
  * (tests/data/fc2d_cases.json, see tests/data/README.md).
  *
  * Tolerances: double 1e-9 relative to |r_enum| (the issue's requirement);
- * float 2e-3: the problems have cond(W) up to 1e4, so a float solution is
- * good to about cond * FLT_EPSILON = 1.2e-3.
+ * float 1e-4: the problems have cond(W) up to 1e4, so cond * FLT_EPSILON =
+ * 1.2e-3 bounds a float solution's error; the solver reaches 8e-7 (printed),
+ * and 1e-4 keeps a margin while still catching a wrong mode.
  */
 #include "support.h"
 
@@ -106,8 +107,9 @@ static double natural_residual(const bs_contact_set *set, double *rounding)
 
 static void test_converged_solves_match_enumeration(void **state)
 {
-    const double tolerance = BS_REAL_FLOAT ? 2e-3 : 1e-9;
-    int id, i;
+    const double tolerance = BS_REAL_FLOAT ? 1e-4 : 1e-9;
+    double worst = 0.0;
+    int id, i, max_sweeps = 0;
     (void)state;
     for (id = 0; id < 50; ++id) {
         bs_contact_set set;
@@ -118,12 +120,17 @@ static void test_converged_solves_match_enumeration(void **state)
             error += pow((double)set.percussion[i] - expected[i], 2);
             norm += expected[i] * expected[i];
         }
+        worst = fmax(worst, norm > 0.0 ? sqrt(error / norm) : sqrt(error));
+        if (result.sweeps > max_sweeps)
+            max_sweeps = result.sweeps;
         if (!result.converged || !(sqrt(error) <= tolerance * sqrt(norm) + 1e-300)) {
             print_error("case %d (n=%d): converged %d after %d sweeps, |P - r_enum| / |r_enum| = %.3g\n", id,
                         n, result.converged, result.sweeps, sqrt(error / norm));
             fail();
         }
     }
+    print_message("50 cases, %s: worst |P - r_enum| / |r_enum| = %.2e (tolerance %.0e), at most %d sweeps\n",
+                  BS_REAL_NAME, worst, tolerance, max_sweeps);
 }
 
 static void test_capped_solve_reports_its_true_residual(void **state)
