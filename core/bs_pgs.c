@@ -82,15 +82,8 @@ static void velocity(const bs_contact_set *set, int a, bs_real *xi)
     xi[1] = xi_t;
 }
 
-static bs_real step_size(const bs_contact_set *set, int a)
-{
-    const bs_real a_nn = set->delassus[2 * a][2 * a];
-    const bs_real a_tt = set->delassus[2 * a + 1][2 * a + 1];
-    return BS_R(1.0) / (a_nn > a_tt ? a_nn : a_tt);
-}
-
 /* Exact solution of contact a's problem with the other contacts frozen. */
-static void solve_contact(bs_contact_set *set, int a)
+static void solve_contact(bs_contact_set *set, const bs_real *step, int a)
 {
     bs_real *p = &set->percussion[2 * a];
     const bs_real mu = set->mu[a];
@@ -117,16 +110,18 @@ static void solve_contact(bs_contact_set *set, int a)
     }
     det = g_nn * g_tt - g_nt * g_nt;
     if (det > BS_R(0.0)) {
-        const bs_real p_n = (g_nt * v_t - g_tt * v_n) / det;
-        const bs_real p_t = (g_nt * v_n - g_nn * v_t) / det;
+        const bs_real inverse = BS_R(1.0) / det;
+        const bs_real p_n = (g_nt * v_t - g_tt * v_n) * inverse;
+        const bs_real p_t = (g_nt * v_n - g_nn * v_t) * inverse;
         if (p_n >= BS_R(0.0) && p_t <= mu * p_n && p_t >= -mu * p_n) { /* stick */
             p[0] = p_n;
             p[1] = p_t;
             return;
         }
     }
-    /* slip: try first the direction the tangential velocity takes without friction */
-    sign = (g_nt * (-v_n / g_nn) + v_t) >= BS_R(0.0) ? BS_R(1.0) : BS_R(-1.0);
+    /* slip: try first the direction the tangential velocity takes without
+     * friction, xi_T = g_nt (-v_n / g_nn) + v_t (times g_nn > 0: no division) */
+    sign = (g_nn * v_t - g_nt * v_n) >= BS_R(0.0) ? BS_R(1.0) : BS_R(-1.0);
     for (attempt = 0; attempt < 2; ++attempt, sign = -sign) {
         const bs_real denominator = g_nn - sign * mu * g_nt;
         if (denominator > BS_R(0.0)) {
@@ -139,12 +134,12 @@ static void solve_contact(bs_contact_set *set, int a)
             }
         }
     }
-    prox(mu, step_size(set, a), xi, p, p); /* fall-back, see the header comment */
+    prox(mu, step[a], xi, p, p); /* fall-back, see the header comment */
 }
 
-bs_real bs_pgs_residual(const bs_contact_set *set, bs_real *norm)
+static bs_real residual(const bs_contact_set *set, const bs_real *step, bs_real *norm)
 {
-    bs_real residual = BS_R(0.0);
+    bs_real sum = BS_R(0.0);
     bs_real size = BS_R(0.0);
     int a;
 
@@ -153,12 +148,30 @@ bs_real bs_pgs_residual(const bs_contact_set *set, bs_real *norm)
         bs_real xi[2];
         bs_real projected[2];
         velocity(set, a, xi);
-        prox(set->mu[a], step_size(set, a), xi, p, projected);
-        residual += magnitude(p[0] - projected[0]) + magnitude(p[1] - projected[1]);
+        prox(set->mu[a], step[a], xi, p, projected);
+        sum += magnitude(p[0] - projected[0]) + magnitude(p[1] - projected[1]);
         size += magnitude(p[0]) + magnitude(p[1]);
     }
     *norm = size;
-    return residual;
+    return sum;
+}
+
+/* r_i = 1 / max(diag G_ii), once per solve. */
+static void step_sizes(const bs_contact_set *set, bs_real *step)
+{
+    int a;
+    for (a = 0; a < set->count; ++a) {
+        const bs_real a_nn = set->delassus[2 * a][2 * a];
+        const bs_real a_tt = set->delassus[2 * a + 1][2 * a + 1];
+        step[a] = BS_R(1.0) / (a_nn > a_tt ? a_nn : a_tt);
+    }
+}
+
+bs_real bs_pgs_residual(const bs_contact_set *set, bs_real *norm)
+{
+    bs_real step[BS_MAX_CONTACTS];
+    step_sizes(set, step);
+    return residual(set, step, norm);
 }
 
 enum { MODE_TAKEOFF, MODE_STICK, MODE_SLIP_POS, MODE_SLIP_NEG }; /* slip +: xi_T > 0, P_T = -mu P_N */
@@ -275,7 +288,7 @@ static int correct_modes(const bs_contact_set *set, int *mode)
  * contact whose law it breaks", until the laws hold, a mode set repeats (the
  * rounds would cycle) or SUBSPACE_TRIES sets were tried. Keeps the best P
  * seen (smallest residual). */
-static void try_subspace(bs_contact_set *set, bs_real *residual, bs_real *norm)
+static void try_subspace(bs_contact_set *set, const bs_real *step, bs_real *best_residual, bs_real *norm)
 {
     const int rows = 2 * set->count;
     bs_real best[2 * BS_MAX_CONTACTS];
@@ -300,9 +313,9 @@ static void try_subspace(bs_contact_set *set, bs_real *residual, bs_real *norm)
             tried[count][j] = mode[j];
         for (j = 0; j < rows; ++j)
             set->percussion[j] = trial[j];
-        trial_residual = bs_pgs_residual(set, &trial_norm);
-        if (trial_residual < *residual) {
-            *residual = trial_residual;
+        trial_residual = residual(set, step, &trial_norm);
+        if (trial_residual < *best_residual) {
+            *best_residual = trial_residual;
             *norm = trial_norm;
             for (j = 0; j < rows; ++j)
                 best[j] = trial[j];
@@ -317,18 +330,21 @@ static void try_subspace(bs_contact_set *set, bs_real *residual, bs_real *norm)
 bs_pgs_result bs_pgs_solve(bs_contact_set *set, int max_sweeps, bs_real tol_rel, bs_real tol_abs)
 {
     bs_pgs_result result;
+    bs_real step[BS_MAX_CONTACTS];
     bs_real norm = BS_R(0.0);
     bs_real previous = BS_R(0.0);
     int a;
 
+    step_sizes(set, step);
+
     result.sweeps = 0;
     for (;;) { /* at least one sweep: the warm start is not trusted unchecked */
         for (a = 0; a < set->count; ++a)
-            solve_contact(set, a);
+            solve_contact(set, step, a);
         ++result.sweeps;
-        result.residual = bs_pgs_residual(set, &norm);
+        result.residual = residual(set, step, &norm);
         if (result.residual > tol_rel * norm + tol_abs && set->count > 1)
-            try_subspace(set, &result.residual, &norm);
+            try_subspace(set, step, &result.residual, &norm);
         result.converged = result.residual <= tol_rel * norm + tol_abs;
         /* stop at the cap, or when a round made no progress: then the
          * residual sits at what the precision can resolve for this G */
