@@ -36,7 +36,9 @@ for scene in fig6 fig6_1mode; do
         sweeps=$(field mean_pgs_iters < "$TMP/run.json")
         max_sweeps=$(field max_pgs_iters < "$TMP/run.json")
         unconverged=$(field unconverged_steps < "$TMP/run.json")
-        rows="$rows| $scene | $real | $(awk -v r="$rate" 'BEGIN { printf "%.2f", r / 1e6 }') | \
+        target=$([ "$scene" = fig6 ] && echo 1 || echo 3)
+        met=$(awk -v r="$rate" -v t="$target" 'BEGIN { print (r >= t * 1e6 ? "yes" : "**no**") }')
+        rows="$rows| $scene | $real | $(awk -v r="$rate" 'BEGIN { printf "%.2f", r / 1e6 }') | $target | $met | \
 $(awk -v r="$low" 'BEGIN { printf "%.2f", r / 1e6 }')-$(awk -v r="$high" 'BEGIN { printf "%.2f", r / 1e6 }') | \
 $wall | $sweeps | $max_sweeps | $unconverged |
 "
@@ -57,11 +59,19 @@ Each figure is the median of $RUNS complete 60 s runs of the scene (3 000 000
 steps at dt = 2e-5 s), one process pinned to one core; the range is the
 slowest and fastest run. Wall time is 3e6 steps / median rate.
 
-| scene | precision | Msteps/s (median) | range | wall for 60 s [s] | mean sweeps per contact step | max sweeps | unconverged steps |
-|---|---|---|---|---|---|---|---|
+| scene | precision | Msteps/s (median) | target | met | range | wall for 60 s [s] | mean sweeps per contact step | max sweeps | unconverged steps |
+|---|---|---|---|---|---|---|---|---|---|
 $rows
 Targets (issue 2): at least 1 million steps/s with five modes and 3 million
 with one mode, so that the 60 s signature move takes under 3 s.
+
+A whole run is measured, so the figure depends on the trajectory: steps with
+two corners of one face in contact cost about twice a free step (the contact
+solve then needs its subspace step, docs/design.md section 6). The float run
+of fig6_1mode jumps to the high branch at 5 s, the double run at 30 s
+(docs/validation.md section 5), so the float run spends twice as many steps
+in such contact and is slower for that reason, not because float arithmetic
+is slower. Where a target is missed the table says so.
 
 The authors' MATLAB code, run under Octave, does about 230 steps/s on this kind
 of machine according to the issue that set these targets; it is not in this
