@@ -45,6 +45,7 @@ BUILD_PACKAGES := gcc make libc6-dev libinih-dev
 TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev libcjson-dev binutils
 
 .PHONY: all run test test-one bench fig6-report clean deps-build deps-test
+.SECONDARY:
 
 all: $(BUILD)/beamslider
 
