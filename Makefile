@@ -47,10 +47,9 @@ TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev libcjson-dev binutils
 .PHONY: all run test test-one bench fig6-report clean deps-build deps-test
 .SECONDARY:
 
-all: $(BUILD)/beamslider
-
-$(BUILD)/beamslider: $(OBJ)/beamslider
-	cp $< $@
+# build/beamslider is the binary of the REAL of the last `make`.
+all: $(OBJ)/beamslider
+	@cmp -s $< $(BUILD)/beamslider || cp $< $(BUILD)/beamslider
 
 $(OBJ)/beamslider: $(HOST_CLI_OBJ) $(HOST_LIB_OBJ) $(CORE_OBJ)
 	$(CC) $(CFLAGS) -o $@ $^ $(HOST_LIBS)
@@ -74,7 +73,7 @@ $(OBJ)/tests/%.o: tests/%.c $(wildcard tests/*.h host/*.h core/*.h) | deps-test
 $(OBJ)/tests/test_%: $(OBJ)/tests/test_%.o $(OBJ)/tests/support.o $(HOST_LIB_OBJ) $(CORE_OBJ)
 	$(CC) $(CFLAGS) -o $@ $^ $(TEST_LIBS)
 
-run: $(BUILD)/beamslider
+run: all
 	$(BUILD)/beamslider run configs/fig6.ini --out $(BUILD)/fig6.csv --every 20
 
 # Every test in this REAL, then the core symbol check.
