@@ -45,16 +45,19 @@ typedef struct bs_step_report {
     int converged;         /* residual <= pgs_tol_rel |P|_1 + pgs_tol_abs */
 } bs_step_report;
 
-/* Scratch of one step's contact problem; lives in bs_sim, not on the stack. */
+/* Scratch of one step's contact problem; lives in bs_sim, not on the stack.
+ * Each contact has BS_ROWS rows: normal (0) and, with friction, tangential (1). */
 typedef struct bs_contact_set {
     int count;                                   /* active contacts */
     int id[BS_MAX_CONTACTS];                     /* contact index 0..5 of each active contact */
-    bs_real dir_beam[BS_MAX_CONTACTS][2][BS_MAX_MODES]; /* W columns (normal, tangential), modal part */
-    bs_real dir_slider[BS_MAX_CONTACTS][2][3];   /* W columns, slider part (x_C, z_C, beta) */
-    bs_real delassus[2 * BS_MAX_CONTACTS][2 * BS_MAX_CONTACTS]; /* G = W^T M^-1 W */
-    bs_real free_velocity[2 * BS_MAX_CONTACTS];  /* c: xi = G P + c */
-    bs_real mu[BS_MAX_CONTACTS];                 /* friction coefficient (0: normal only) */
-    bs_real percussion[2 * BS_MAX_CONTACTS];     /* P [N s] */
+    bs_real dir_beam[BS_MAX_CONTACTS][BS_ROWS][BS_MAX_MODES];    /* W columns, modal part */
+    bs_real dir_slider[BS_MAX_CONTACTS][BS_ROWS][BS_SLIDER_DOF]; /* W columns, slider part */
+    bs_real delassus[BS_ROWS * BS_MAX_CONTACTS][BS_ROWS * BS_MAX_CONTACTS]; /* G = W^T M^-1 W */
+    bs_real free_velocity[BS_ROWS * BS_MAX_CONTACTS];  /* c: xi = G P + c */
+#if BS_WITH_FRICTION
+    bs_real mu[BS_MAX_CONTACTS];                 /* friction coefficient (0 at the stops) */
+#endif
+    bs_real percussion[BS_ROWS * BS_MAX_CONTACTS];     /* P [N s] */
 } bs_contact_set;
 
 typedef struct bs_sim {
@@ -69,7 +72,7 @@ typedef struct bs_sim {
     bs_real slider_velocity[3];
     bs_real x_c_low;                   /* compensated-sum remainder of x_C (MODEL.md 9.2) */
     bs_real omega_sq_max;              /* largest omega_k^2 of the scene */
-    bs_real percussion[BS_MAX_CONTACTS][2]; /* last step's percussions, warm start */
+    bs_real percussion[BS_MAX_CONTACTS][BS_ROWS]; /* last step's percussions, warm start */
     bs_step_report report;
     bs_contact_set contacts;
 } bs_sim;

@@ -16,11 +16,12 @@
 bs_real bs_beam_force(const bs_scene *scene, const bs_real *q, const bs_real *u,
                       bs_real base_accel, bs_real *force)
 {
-    const int n = scene->n_modes;
+    const int n = BS_NMODES(scene);
+    int i;
+#if BS_WITH_STRETCHING
     bs_real sq[BS_MAX_MODES];
     bs_real stretch_energy = BS_R(0.0); /* q^T S q */
     bs_real sq_norm2 = BS_R(0.0);       /* |S q|^2 */
-    int i;
     int j;
 
     for (i = 0; i < n; ++i) {
@@ -35,4 +36,9 @@ bs_real bs_beam_force(const bs_scene *scene, const bs_real *q, const bs_real *u,
         force[i] = -scene->gamma[i] * base_accel - scene->omega_sq[i] * q[i]
                    - scene->damping[i] * u[i] - stretch_energy * sq[i];
     return BS_R(2.0) * sq_norm2 + stretch_energy * scene->stretch_norm;
+#else
+    for (i = 0; i < n; ++i)
+        force[i] = -scene->gamma[i] * base_accel - scene->omega_sq[i] * q[i] - scene->damping[i] * u[i];
+    return BS_R(0.0);
+#endif
 }

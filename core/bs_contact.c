@@ -9,7 +9,8 @@
  *   r_B   = (x_P, w0 + w) + zeta h/2 (-w', 1)
  *   n     = zeta (-sin alpha, cos alpha),   t = zeta (-cos alpha, -sin alpha)
  *   d     = r_P - r_B = ( zeta h/2 w',  z_P - w0 - w - zeta h/2 )
- *   g_N   = n.d,   g_T = t.d           (active when g_N < 0)
+ *   g_N   = n.d = cos(alpha) (zeta d_z - h/2 w'^2),   g_T = t.d
+ *   (active when g_N < 0; the sign needs no square root)
  *
  * Force directions W = (dg/dq)^T, the published model's (MODEL.md 4):
  *   slider: dg/d(x_C, z_C, beta) = C [I | A' rho],  C = [n^T; t^T],
@@ -20,6 +21,8 @@
  *           W_N,k = -n_z phi_k + (-n_x a1 - n_z a2 + g_T) phi_k'
  *           W_T,k = -t_z phi_k + (-t_x a1 - t_z a2 - g_N) phi_k'
  *   base:   w~ = -C (0, dw0/dt)
+ * Without friction only the normal row exists; with the rotation locked the
+ * beta column does not.
  *
  * Clamp end stops (MODEL.md 9.6): frictionless unilateral contacts on x_C,
  * g = x_C - stop_min (left) and g = stop_max - x_C (right), W = (0, +-1, 0, 0).
@@ -32,9 +35,9 @@
 
 static void add_corner(const bs_scene *scene, const bs_contact_frame *frame, int corner,
                        bs_real cos_beta, bs_real sin_beta, bs_contact_set *set,
-                       bs_real base_term[BS_MAX_CONTACTS][2])
+                       bs_real base_term[BS_MAX_CONTACTS][BS_ROWS])
 {
-    const int n = scene->n_modes;
+    const int n = BS_NMODES(scene);
     const bs_real zeta = (corner == 0 || corner == 3) ? BS_R(1.0) : BS_R(-1.0);
     const bs_real hh = scene->half_thickness;
     const bs_real *rho = scene->corner[corner];
@@ -46,8 +49,7 @@ static void add_corner(const bs_scene *scene, const bs_contact_frame *frame, int
     bs_real slope[BS_MAX_MODES];
     bs_real w = BS_R(0.0);
     bs_real w_slope = BS_R(0.0);
-    bs_real cos_alpha, sin_alpha, n_x, n_z, t_x, t_z, d_x, d_z, gap_n, gap_t;
-    bs_real a1, a2, coef_nn, coef_ns, coef_tn, coef_ts;
+    bs_real cos_alpha, sin_alpha, n_x, n_z, d_x, d_z, gap_n, a1, a2, coef_nn, coef_ns;
     int a;
     int k;
 
@@ -58,63 +60,72 @@ static void add_corner(const bs_scene *scene, const bs_contact_frame *frame, int
     }
     d_x = zeta * hh * w_slope;
     d_z = z_p - frame->base.displacement - w - zeta * hh;
-    /* g_N = cos(alpha) (zeta d_z - h/2 w'^2): the sign needs no square root */
-    gap_n = zeta * d_z - hh * w_slope * w_slope;
-    if (!(gap_n < BS_R(0.0)))
+    if (!(zeta * d_z - hh * w_slope * w_slope < BS_R(0.0)))
         return;
     cos_alpha = BS_R(1.0) / bs_sqrt(BS_R(1.0) + w_slope * w_slope);
     sin_alpha = w_slope * cos_alpha;
     n_x = -zeta * sin_alpha;
     n_z = zeta * cos_alpha;
-    t_x = -zeta * cos_alpha;
-    t_z = -zeta * sin_alpha;
     gap_n = n_x * d_x + n_z * d_z;
-    gap_t = t_x * d_x + t_z * d_z;
 
     a = set->count++;
     set->id[a] = corner;
-    set->mu[a] = scene->mu;
     a1 = zeta * hh * (w_slope * w_slope - BS_R(1.0));
     a2 = -zeta * hh * w_slope;
     coef_nn = -n_z;                               /* factor of phi_k in W_N */
-    coef_ns = -n_x * a1 - n_z * a2 + gap_t;       /* factor of phi_k' in W_N */
-    coef_tn = -t_z;
-    coef_ts = -t_x * a1 - t_z * a2 - gap_n;
-    for (k = 0; k < n; ++k) {
-        set->dir_beam[a][0][k] = coef_nn * phi[k] + coef_ns * slope[k];
-        set->dir_beam[a][1][k] = coef_tn * phi[k] + coef_ts * slope[k];
-    }
+    coef_ns = -n_x * a1 - n_z * a2;               /* factor of phi_k' in W_N, + g_T below */
     set->dir_slider[a][0][0] = n_x;
     set->dir_slider[a][0][1] = n_z;
+#if BS_WITH_ROTATION
     set->dir_slider[a][0][2] = n_x * arm_z - n_z * arm_x;
-    set->dir_slider[a][1][0] = t_x;
-    set->dir_slider[a][1][1] = t_z;
-    set->dir_slider[a][1][2] = t_x * arm_z - t_z * arm_x;
+#endif
     base_term[a][0] = -n_z * frame->base.velocity;
-    base_term[a][1] = -t_z * frame->base.velocity;
+#if BS_WITH_FRICTION
+    {
+        const bs_real t_x = -zeta * cos_alpha;
+        const bs_real t_z = -zeta * sin_alpha;
+        const bs_real gap_t = t_x * d_x + t_z * d_z;
+        const bs_real coef_tn = -t_z;
+        const bs_real coef_ts = -t_x * a1 - t_z * a2 - gap_n;
+        coef_ns += gap_t;
+        set->mu[a] = scene->mu;
+        for (k = 0; k < n; ++k)
+            set->dir_beam[a][1][k] = coef_tn * phi[k] + coef_ts * slope[k];
+        set->dir_slider[a][1][0] = t_x;
+        set->dir_slider[a][1][1] = t_z;
+#if BS_WITH_ROTATION
+        set->dir_slider[a][1][2] = t_x * arm_z - t_z * arm_x;
+#endif
+        base_term[a][1] = -t_z * frame->base.velocity;
+    }
+#else
+    (void)gap_n; /* the tangential row is what needs it */
+#endif
+    for (k = 0; k < n; ++k)
+        set->dir_beam[a][0][k] = coef_nn * phi[k] + coef_ns * slope[k];
 }
 
 static void add_stop(const bs_scene *scene, int id, bs_real sign, bs_contact_set *set,
-                     bs_real base_term[BS_MAX_CONTACTS][2])
+                     bs_real base_term[BS_MAX_CONTACTS][BS_ROWS])
 {
     const int a = set->count++;
-    int k;
+    int r, k;
 
     set->id[a] = id;
+#if BS_WITH_FRICTION
     set->mu[a] = BS_R(0.0);
-    for (k = 0; k < scene->n_modes; ++k) {
-        set->dir_beam[a][0][k] = BS_R(0.0);
-        set->dir_beam[a][1][k] = BS_R(0.0);
-    }
-    for (k = 0; k < 3; ++k) {
-        set->dir_slider[a][0][k] = BS_R(0.0);
-        set->dir_slider[a][1][k] = BS_R(0.0);
+#endif
+    for (r = 0; r < BS_ROWS; ++r) {
+        for (k = 0; k < BS_NMODES(scene); ++k)
+            set->dir_beam[a][r][k] = BS_R(0.0);
+        for (k = 0; k < BS_SLIDER_DOF; ++k)
+            set->dir_slider[a][r][k] = BS_R(0.0);
+        base_term[a][r] = BS_R(0.0);
     }
     set->dir_slider[a][0][0] = sign;
-    base_term[a][0] = BS_R(0.0);
-    base_term[a][1] = BS_R(0.0);
 }
 
+#if BS_WITH_ROTATION
 /* cos and sin of the slider rotation. The play keeps beta within a few
  * (R - h) / B ~ 0.005 rad; for |beta| < 0.05 the Taylor polynomials below
  * are exact to rounding in double (first omitted terms beta^9/9! = 5e-18 and
@@ -133,14 +144,17 @@ static void rotation(bs_real beta, bs_real *cos_beta, bs_real *sin_beta)
     *cos_beta = bs_cos(beta);
     *sin_beta = bs_sin(beta);
 }
+#endif
 
 void bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
-                       bs_contact_set *set, bs_real base_term[BS_MAX_CONTACTS][2])
+                       bs_contact_set *set, bs_real base_term[BS_MAX_CONTACTS][BS_ROWS])
 {
-    bs_real cos_beta, sin_beta;
+    bs_real cos_beta = BS_R(1.0), sin_beta = BS_R(0.0);
     int corner;
 
+#if BS_WITH_ROTATION
     rotation(frame->beta, &cos_beta, &sin_beta);
+#endif
     set->count = 0;
     for (corner = 0; corner < BS_CORNERS; ++corner)
         add_corner(scene, frame, corner, cos_beta, sin_beta, set, base_term);
@@ -154,42 +168,41 @@ void bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
 
 void bs_contact_velocity(const bs_scene *scene, const bs_contact_set *set,
                          const bs_real *u_beam, const bs_real *u_slider,
-                         const bs_real base_term[BS_MAX_CONTACTS][2],
-                         bs_real gamma[2 * BS_MAX_CONTACTS])
+                         const bs_real base_term[BS_MAX_CONTACTS][BS_ROWS],
+                         bs_real gamma[BS_ROWS * BS_MAX_CONTACTS])
 {
-    int a;
-    int r;
-    int k;
+    int a, r, k;
 
     for (a = 0; a < set->count; ++a) {
-        for (r = 0; r < 2; ++r) {
+        for (r = 0; r < BS_ROWS; ++r) {
             const bs_real *beam = set->dir_beam[a][r];
             const bs_real *slider = set->dir_slider[a][r];
-            bs_real v = base_term[a][r] + slider[0] * u_slider[0] + slider[1] * u_slider[1]
-                        + slider[2] * u_slider[2];
-            for (k = 0; k < scene->n_modes; ++k)
+            bs_real v = base_term[a][r];
+            for (k = 0; k < BS_SLIDER_DOF; ++k)
+                v += slider[k] * u_slider[k];
+            for (k = 0; k < BS_NMODES(scene); ++k)
                 v += beam[k] * u_beam[k];
-            gamma[2 * a + r] = v;
+            gamma[BS_ROWS * a + r] = v;
         }
     }
 }
 
 void bs_contact_delassus(const bs_scene *scene, bs_contact_set *set)
 {
-    const int rows = 2 * set->count;
-    int i;
-    int j;
-    int k;
+    const int rows = BS_ROWS * set->count;
+    int i, j, k;
 
     for (i = 0; i < rows; ++i) {
-        const bs_real *beam_i = set->dir_beam[i / 2][i % 2];
-        const bs_real *slider_i = set->dir_slider[i / 2][i % 2];
+        const bs_real *beam_i = set->dir_beam[i / BS_ROWS][i % BS_ROWS];
+        const bs_real *slider_i = set->dir_slider[i / BS_ROWS][i % BS_ROWS];
         for (j = i; j < rows; ++j) {
-            const bs_real *beam_j = set->dir_beam[j / 2][j % 2];
-            const bs_real *slider_j = set->dir_slider[j / 2][j % 2];
-            bs_real g = scene->mass_inv * (slider_i[0] * slider_j[0] + slider_i[1] * slider_j[1])
-                        + scene->inertia_inv * slider_i[2] * slider_j[2];
-            for (k = 0; k < scene->n_modes; ++k)
+            const bs_real *beam_j = set->dir_beam[j / BS_ROWS][j % BS_ROWS];
+            const bs_real *slider_j = set->dir_slider[j / BS_ROWS][j % BS_ROWS];
+            bs_real g = scene->mass_inv * (slider_i[0] * slider_j[0] + slider_i[1] * slider_j[1]);
+#if BS_WITH_ROTATION
+            g += scene->inertia_inv * slider_i[2] * slider_j[2];
+#endif
+            for (k = 0; k < BS_NMODES(scene); ++k)
                 g += beam_i[k] * beam_j[k];
             set->delassus[i][j] = g;
             set->delassus[j][i] = g;
@@ -200,17 +213,18 @@ void bs_contact_delassus(const bs_scene *scene, bs_contact_set *set)
 void bs_contact_apply(const bs_scene *scene, const bs_contact_set *set,
                       bs_real *u_beam, bs_real *u_slider)
 {
-    int a;
-    int k;
+    int a, r, k;
 
-    for (a = 0; a < set->count; ++a) {
-        const bs_real p_n = set->percussion[2 * a];
-        const bs_real p_t = set->percussion[2 * a + 1];
-        const bs_real (*slider)[3] = set->dir_slider[a];
-        for (k = 0; k < scene->n_modes; ++k)
-            u_beam[k] += set->dir_beam[a][0][k] * p_n + set->dir_beam[a][1][k] * p_t;
-        u_slider[0] += scene->mass_inv * (slider[0][0] * p_n + slider[1][0] * p_t);
-        u_slider[1] += scene->mass_inv * (slider[0][1] * p_n + slider[1][1] * p_t);
-        u_slider[2] += scene->inertia_inv * (slider[0][2] * p_n + slider[1][2] * p_t);
-    }
+    for (a = 0; a < set->count; ++a)
+        for (r = 0; r < BS_ROWS; ++r) {
+            const bs_real p = set->percussion[BS_ROWS * a + r];
+            const bs_real *slider = set->dir_slider[a][r];
+            for (k = 0; k < BS_NMODES(scene); ++k)
+                u_beam[k] += set->dir_beam[a][r][k] * p;
+            u_slider[0] += scene->mass_inv * slider[0] * p;
+            u_slider[1] += scene->mass_inv * slider[1] * p;
+#if BS_WITH_ROTATION
+            u_slider[2] += scene->inertia_inv * slider[2] * p;
+#endif
+        }
 }

@@ -16,16 +16,18 @@ typedef struct bs_contact_frame {
     bs_base base;           /* base motion */
 } bs_contact_frame;
 
-/* Finds the contacts with g_N < 0 and fills set->count, id, mu and the force
- * directions W; base_term[a] receives w~ = dg/dt of active contact a. */
+/* Finds the contacts with g_N < 0 and fills set->count, id, mu (with
+ * friction) and the force directions W; base_term[a] receives w~ = dg/dt of
+ * active contact a. */
 void bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
-                       bs_contact_set *set, bs_real base_term[BS_MAX_CONTACTS][2]);
+                       bs_contact_set *set, bs_real base_term[BS_MAX_CONTACTS][BS_ROWS]);
 
-/* Relative velocity gamma = W^T u + w~ of every active contact. */
+/* Relative velocity gamma = W^T u + w~ of every active contact (u_slider:
+ * x_C, z_C, beta velocities). */
 void bs_contact_velocity(const bs_scene *scene, const bs_contact_set *set,
                          const bs_real *u_beam, const bs_real *u_slider,
-                         const bs_real base_term[BS_MAX_CONTACTS][2],
-                         bs_real gamma[2 * BS_MAX_CONTACTS]);
+                         const bs_real base_term[BS_MAX_CONTACTS][BS_ROWS],
+                         bs_real gamma[BS_ROWS * BS_MAX_CONTACTS]);
 
 /* Delassus operator G = W^T M^-1 W of the active contacts. */
 void bs_contact_delassus(const bs_scene *scene, bs_contact_set *set);

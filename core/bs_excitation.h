@@ -14,7 +14,7 @@ typedef struct bs_base {
 /* Base motion at phase (turns * 2^64). */
 bs_base bs_excitation_at(const bs_scene *scene, uint64_t phase);
 
-/* Phase as an angle in [-pi, pi). */
-bs_real bs_excitation_angle(uint64_t phase);
+/* sin and cos of 2 pi phase / 2^64, to about an ulp of bs_real. */
+void bs_excitation_sincos(uint64_t phase, bs_real *sine, bs_real *cosine);
 
 #endif

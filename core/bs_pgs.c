@@ -1,9 +1,9 @@
 /* bs_pgs.c - bounded projected Gauss-Seidel with subspace minimisation for
  * the per-step contact problem.
  *
- * Unknowns: percussions P = (P_N,1, P_T,1, ..., P_N,n, P_T,n) [N s].
- * Velocities after the step (Newton-modified): xi = G P + c, G = W^T M^-1 W.
- * Contact laws for each contact i (MODEL.md 4):
+ * Unknowns: percussions P = (P_N,1, P_T,1, ..., P_N,n, P_T,n) [N s] (P_N only
+ * when the build has no friction). Velocities after the step (Newton-modified):
+ * xi = G P + c, G = W^T M^-1 W. Contact laws for each contact i (MODEL.md 4):
  *   0 <= P_N  _|_  xi_N >= 0,   |P_T| <= mu P_N,   P_T = -mu P_N sign(xi_T) if xi_T != 0.
  *
  * Gauss-Seidel sweep: visit the contacts in order and solve contact i's 2x2
@@ -27,10 +27,13 @@
  *   take-off   P_N = 0, P_T = 0
  *   stick      xi_N = 0, xi_T = 0
  *   slip s     xi_N = 0, P_T + s mu P_N = 0
- * solved directly (Gaussian elimination, partial pivoting, 2n <= 12 unknowns);
- * its solution replaces P when its residual is smaller. With the right modes
- * that is the exact solution. (Projected Gauss-Seidel subspace minimisation:
- * Silcowitz, Niebe, Erleben 2010.)
+ * solved directly (Gaussian elimination, partial pivoting, 2n <= 12 unknowns).
+ * If the solution breaks a law, the first breaching contact moves to the mode
+ * the breach points to (Murty's least-index rule: moving all at once can
+ * cycle) and the system is solved again, until the laws hold, a mode set
+ * repeats or SUBSPACE_TRIES sets were tried; the P with the smallest residual
+ * is kept. With the right modes that is the exact solution. (Projected
+ * Gauss-Seidel subspace minimisation: Silcowitz, Niebe, Erleben 2010.)
  *
  * Warm start: P comes in holding each contact's percussion of the last step.
  * Stop: after each sweep (and subspace step) the natural-map residual of the
@@ -46,111 +49,129 @@
  */
 #include "bs_pgs.h"
 
+#define ROWS BS_ROWS
+#define MAX_ROWS (BS_ROWS * BS_MAX_CONTACTS)
+#define SUBSPACE_TRIES 8 /* mode sets tried per subspace step */
+
+enum { MODE_TAKEOFF, MODE_STICK, MODE_SLIP_POS, MODE_SLIP_NEG }; /* slip +: xi_T > 0, P_T = -mu P_N */
+
 static bs_real magnitude(bs_real value)
 {
     return value < BS_R(0.0) ? -value : value;
 }
 
-static bs_real clamp(bs_real value, bs_real low, bs_real high)
-{
-    return value < low ? low : (value > high ? high : value);
-}
-
-/* prox of the contact laws with step r: P_N first, then P_T in the new cone. */
-static void prox(bs_real mu, bs_real r, const bs_real *xi, const bs_real *p, bs_real *out)
-{
-    const bs_real p_n = p[0] - r * xi[0];
-    out[0] = p_n > BS_R(0.0) ? p_n : BS_R(0.0);
-    out[1] = clamp(p[1] - r * xi[1], -mu * out[0], mu * out[0]);
-}
-
 /* xi of contact a's rows with the current P. */
 static void velocity(const bs_contact_set *set, int a, bs_real *xi)
 {
-    const int rows = 2 * set->count;
-    const bs_real *g_n = set->delassus[2 * a];
-    const bs_real *g_t = set->delassus[2 * a + 1];
-    bs_real xi_n = set->free_velocity[2 * a];
-    bs_real xi_t = set->free_velocity[2 * a + 1];
-    int j;
-
-    for (j = 0; j < rows; ++j) {
-        xi_n += g_n[j] * set->percussion[j];
-        xi_t += g_t[j] * set->percussion[j];
+    const int rows = ROWS * set->count;
+    int r, j;
+    for (r = 0; r < ROWS; ++r) {
+        const bs_real *g = set->delassus[ROWS * a + r];
+        bs_real v = set->free_velocity[ROWS * a + r];
+        for (j = 0; j < rows; ++j)
+            v += g[j] * set->percussion[j];
+        xi[r] = v;
     }
-    xi[0] = xi_n;
-    xi[1] = xi_t;
+}
+
+/* prox of the contact laws with step r: P_N first, then P_T in the new cone. */
+static void prox(const bs_contact_set *set, int a, bs_real step, const bs_real *xi, const bs_real *p,
+                 bs_real *out)
+{
+    const bs_real p_n = p[0] - step * xi[0];
+    out[0] = p_n > BS_R(0.0) ? p_n : BS_R(0.0);
+#if BS_WITH_FRICTION
+    {
+        const bs_real limit = set->mu[a] * out[0];
+        const bs_real p_t = p[1] - step * xi[1];
+        out[1] = p_t < -limit ? -limit : (p_t > limit ? limit : p_t);
+    }
+#else
+    (void)set;
+    (void)a;
+#endif
 }
 
 /* Exact solution of contact a's problem with the other contacts frozen. */
 static void solve_contact(bs_contact_set *set, const bs_real *step, int a)
 {
-    bs_real *p = &set->percussion[2 * a];
-    const bs_real mu = set->mu[a];
-    const bs_real g_nn = set->delassus[2 * a][2 * a];
-    const bs_real g_nt = set->delassus[2 * a][2 * a + 1];
-    const bs_real g_tt = set->delassus[2 * a + 1][2 * a + 1];
-    bs_real xi[2];
-    bs_real v_n, v_t, det, sign;
-    int attempt;
+    bs_real *p = &set->percussion[ROWS * a];
+    const bs_real g_nn = set->delassus[ROWS * a][ROWS * a];
+    bs_real xi[ROWS];
+    bs_real v_n;
 
     velocity(set, a, xi);
-    v_n = xi[0] - g_nn * p[0] - g_nt * p[1];
-    v_t = xi[1] - g_nt * p[0] - g_tt * p[1];
+#if BS_WITH_FRICTION
+    {
+        const bs_real mu = set->mu[a];
+        const bs_real g_nt = set->delassus[2 * a][2 * a + 1];
+        const bs_real g_tt = set->delassus[2 * a + 1][2 * a + 1];
+        const bs_real v_t = xi[1] - g_nt * p[0] - g_tt * p[1];
+        bs_real det, sign;
+        int attempt;
 
-    if (v_n >= BS_R(0.0)) { /* take-off */
-        p[0] = BS_R(0.0);
-        p[1] = BS_R(0.0);
-        return;
-    }
-    if (mu == BS_R(0.0)) { /* frictionless: normal only */
-        p[0] = -v_n / g_nn;
-        p[1] = BS_R(0.0);
-        return;
-    }
-    det = g_nn * g_tt - g_nt * g_nt;
-    if (det > BS_R(0.0)) {
-        const bs_real inverse = BS_R(1.0) / det;
-        const bs_real p_n = (g_nt * v_t - g_tt * v_n) * inverse;
-        const bs_real p_t = (g_nt * v_n - g_nn * v_t) * inverse;
-        if (p_n >= BS_R(0.0) && p_t <= mu * p_n && p_t >= -mu * p_n) { /* stick */
-            p[0] = p_n;
-            p[1] = p_t;
+        v_n = xi[0] - g_nn * p[0] - g_nt * p[1];
+        if (v_n >= BS_R(0.0)) { /* take-off */
+            p[0] = BS_R(0.0);
+            p[1] = BS_R(0.0);
             return;
         }
-    }
-    /* slip: try first the direction the tangential velocity takes without
-     * friction, xi_T = g_nt (-v_n / g_nn) + v_t (times g_nn > 0: no division) */
-    sign = (g_nn * v_t - g_nt * v_n) >= BS_R(0.0) ? BS_R(1.0) : BS_R(-1.0);
-    for (attempt = 0; attempt < 2; ++attempt, sign = -sign) {
-        const bs_real denominator = g_nn - sign * mu * g_nt;
-        if (denominator > BS_R(0.0)) {
-            const bs_real p_n = -v_n / denominator;
-            const bs_real xi_t = (g_nt - sign * mu * g_tt) * p_n + v_t;
-            if (sign * xi_t >= BS_R(0.0)) {
+        if (mu == BS_R(0.0)) { /* frictionless contact (a stop): normal only */
+            p[0] = -v_n / g_nn;
+            p[1] = BS_R(0.0);
+            return;
+        }
+        det = g_nn * g_tt - g_nt * g_nt;
+        if (det > BS_R(0.0)) {
+            const bs_real inverse = BS_R(1.0) / det;
+            const bs_real p_n = (g_nt * v_t - g_tt * v_n) * inverse;
+            const bs_real p_t = (g_nt * v_n - g_nn * v_t) * inverse;
+            if (p_n >= BS_R(0.0) && p_t <= mu * p_n && p_t >= -mu * p_n) { /* stick */
                 p[0] = p_n;
-                p[1] = -sign * mu * p_n;
+                p[1] = p_t;
                 return;
             }
         }
+        /* slip: try first the direction the tangential velocity takes without
+         * friction, xi_T = g_nt (-v_n / g_nn) + v_t (times g_nn > 0: no division) */
+        sign = (g_nn * v_t - g_nt * v_n) >= BS_R(0.0) ? BS_R(1.0) : BS_R(-1.0);
+        for (attempt = 0; attempt < 2; ++attempt, sign = -sign) {
+            const bs_real denominator = g_nn - sign * mu * g_nt;
+            if (denominator > BS_R(0.0)) {
+                const bs_real p_n = -v_n / denominator;
+                const bs_real xi_t = (g_nt - sign * mu * g_tt) * p_n + v_t;
+                if (sign * xi_t >= BS_R(0.0)) {
+                    p[0] = p_n;
+                    p[1] = -sign * mu * p_n;
+                    return;
+                }
+            }
+        }
+        prox(set, a, step[a], xi, p, p); /* fall-back, see the header comment */
     }
-    prox(mu, step[a], xi, p, p); /* fall-back, see the header comment */
+#else
+    (void)step;
+    v_n = xi[0] - g_nn * p[0];
+    p[0] = v_n >= BS_R(0.0) ? BS_R(0.0) : -v_n / g_nn;
+#endif
 }
 
 static bs_real residual(const bs_contact_set *set, const bs_real *step, bs_real *norm)
 {
     bs_real sum = BS_R(0.0);
     bs_real size = BS_R(0.0);
-    int a;
+    int a, r;
 
     for (a = 0; a < set->count; ++a) {
-        const bs_real *p = &set->percussion[2 * a];
-        bs_real xi[2];
-        bs_real projected[2];
+        const bs_real *p = &set->percussion[ROWS * a];
+        bs_real xi[ROWS];
+        bs_real projected[ROWS];
         velocity(set, a, xi);
-        prox(set->mu[a], step[a], xi, p, projected);
-        sum += magnitude(p[0] - projected[0]) + magnitude(p[1] - projected[1]);
-        size += magnitude(p[0]) + magnitude(p[1]);
+        prox(set, a, step[a], xi, p, projected);
+        for (r = 0; r < ROWS; ++r) {
+            sum += magnitude(p[r] - projected[r]);
+            size += magnitude(p[r]);
+        }
     }
     *norm = size;
     return sum;
@@ -161,9 +182,12 @@ static void step_sizes(const bs_contact_set *set, bs_real *step)
 {
     int a;
     for (a = 0; a < set->count; ++a) {
-        const bs_real a_nn = set->delassus[2 * a][2 * a];
-        const bs_real a_tt = set->delassus[2 * a + 1][2 * a + 1];
-        step[a] = BS_R(1.0) / (a_nn > a_tt ? a_nn : a_tt);
+        bs_real largest = set->delassus[ROWS * a][ROWS * a];
+#if BS_WITH_FRICTION
+        if (set->delassus[2 * a + 1][2 * a + 1] > largest)
+            largest = set->delassus[2 * a + 1][2 * a + 1];
+#endif
+        step[a] = BS_R(1.0) / largest;
     }
 }
 
@@ -174,106 +198,118 @@ bs_real bs_pgs_residual(const bs_contact_set *set, bs_real *norm)
     return residual(set, step, norm);
 }
 
-enum { MODE_TAKEOFF, MODE_STICK, MODE_SLIP_POS, MODE_SLIP_NEG }; /* slip +: xi_T > 0, P_T = -mu P_N */
-
 /* Mode contact a shows at percussion p. */
-static int mode_of(bs_real mu, const bs_real *p)
+static int mode_of(const bs_contact_set *set, int a)
 {
-    const bs_real limit = mu * p[0];
+    const bs_real *p = &set->percussion[ROWS * a];
     if (!(p[0] > BS_R(0.0)))
         return MODE_TAKEOFF;
-    if (p[1] < limit && p[1] > -limit)
-        return MODE_STICK;
-    return p[1] > BS_R(0.0) ? MODE_SLIP_NEG : MODE_SLIP_POS;
+#if BS_WITH_FRICTION
+    {
+        const bs_real limit = set->mu[a] * p[0];
+        if (!(p[1] < limit && p[1] > -limit))
+            return p[1] > BS_R(0.0) ? MODE_SLIP_NEG : MODE_SLIP_POS;
+    }
+#endif
+    return MODE_STICK;
 }
 
 /* Solves the linear system the modes define into trial. Returns 0, or -1
  * when it is singular. */
 static int subspace_solve(const bs_contact_set *set, const int *mode, bs_real *trial)
 {
-    const int rows = 2 * set->count;
-    bs_real a[2 * BS_MAX_CONTACTS][2 * BS_MAX_CONTACTS + 1]; /* [A | b] */
-    bs_real inverse[2 * BS_MAX_CONTACTS];                      /* 1 / pivots */
+    const int rows = ROWS * set->count;
+    bs_real m[MAX_ROWS][MAX_ROWS + 1]; /* [A | b] */
+    bs_real inverse[MAX_ROWS];         /* 1 / pivots */
     int i, j, col;
 
     for (i = 0; i < set->count; ++i) {
-        bs_real *row_n = a[2 * i];
-        bs_real *row_t = a[2 * i + 1];
-        for (j = 0; j <= rows; ++j) {
-            row_n[j] = BS_R(0.0);
-            row_t[j] = BS_R(0.0);
-        }
+        int r;
+        for (r = 0; r < ROWS; ++r)
+            for (j = 0; j <= rows; ++j)
+                m[ROWS * i + r][j] = BS_R(0.0);
         if (mode[i] == MODE_TAKEOFF) {
-            row_n[2 * i] = BS_R(1.0);
-            row_t[2 * i + 1] = BS_R(1.0);
+            for (r = 0; r < ROWS; ++r)
+                m[ROWS * i + r][ROWS * i + r] = BS_R(1.0);
             continue;
         }
         for (j = 0; j < rows; ++j)
-            row_n[j] = set->delassus[2 * i][j];
-        row_n[rows] = -set->free_velocity[2 * i];
+            m[ROWS * i][j] = set->delassus[ROWS * i][j];
+        m[ROWS * i][rows] = -set->free_velocity[ROWS * i];
+#if BS_WITH_FRICTION
         if (mode[i] == MODE_STICK) {
             for (j = 0; j < rows; ++j)
-                row_t[j] = set->delassus[2 * i + 1][j];
-            row_t[rows] = -set->free_velocity[2 * i + 1];
+                m[2 * i + 1][j] = set->delassus[2 * i + 1][j];
+            m[2 * i + 1][rows] = -set->free_velocity[2 * i + 1];
         } else {
-            row_t[2 * i + 1] = BS_R(1.0);
-            row_t[2 * i] = mode[i] == MODE_SLIP_POS ? set->mu[i] : -set->mu[i];
+            m[2 * i + 1][2 * i + 1] = BS_R(1.0);
+            m[2 * i + 1][2 * i] = mode[i] == MODE_SLIP_POS ? set->mu[i] : -set->mu[i];
         }
+#endif
     }
     for (col = 0; col < rows; ++col) {
         int pivot = col;
         for (i = col + 1; i < rows; ++i)
-            if ((a[i][col] < BS_R(0.0) ? -a[i][col] : a[i][col])
-                > (a[pivot][col] < BS_R(0.0) ? -a[pivot][col] : a[pivot][col]))
+            if (magnitude(m[i][col]) > magnitude(m[pivot][col]))
                 pivot = i;
-        if (a[pivot][col] == BS_R(0.0))
+        if (m[pivot][col] == BS_R(0.0))
             return -1;
         if (pivot != col)
             for (j = col; j <= rows; ++j) {
-                const bs_real swap = a[col][j];
-                a[col][j] = a[pivot][j];
-                a[pivot][j] = swap;
+                const bs_real swap = m[col][j];
+                m[col][j] = m[pivot][j];
+                m[pivot][j] = swap;
             }
-        inverse[col] = BS_R(1.0) / a[col][col]; /* one division per pivot */
+        inverse[col] = BS_R(1.0) / m[col][col]; /* one division per pivot */
         for (i = col + 1; i < rows; ++i) {
-            const bs_real factor = a[i][col] * inverse[col];
+            const bs_real factor = m[i][col] * inverse[col];
             for (j = col; j <= rows; ++j)
-                a[i][j] -= factor * a[col][j];
+                m[i][j] -= factor * m[col][j];
         }
     }
     for (i = rows - 1; i >= 0; --i) {
-        bs_real value = a[i][rows];
+        bs_real value = m[i][rows];
         for (j = i + 1; j < rows; ++j)
-            value -= a[i][j] * trial[j];
+            value -= m[i][j] * trial[j];
         trial[i] = value * inverse[i];
     }
     return 0;
 }
 
-/* Moves the first contact whose trial solution breaks its law to the mode
- * the breach points to (one contact at a time, Murty's least-index rule:
- * moving every breaching contact at once can cycle). Returns 1 if a contact
- * moved, 0 if the trial obeys every law. */
+/* The mode contact a's trial solution points to (its own mode if it obeys
+ * its law). A stick breach is checked first: a nearly singular stick pair
+ * gives wild P_T and P_N of either sign, and only the slip row tames P_T. */
+static int corrected_mode(const bs_contact_set *set, int a, int mode)
+{
+    const bs_real *p = &set->percussion[ROWS * a];
+    bs_real xi[ROWS];
+
+    velocity(set, a, xi);
+    if (mode == MODE_TAKEOFF)
+        return xi[0] < BS_R(0.0) ? MODE_STICK : MODE_TAKEOFF;
+#if BS_WITH_FRICTION
+    {
+        const bs_real limit = set->mu[a] * p[0];
+        if (mode == MODE_STICK && (p[1] > limit || p[1] < -limit))
+            return p[1] > BS_R(0.0) ? MODE_SLIP_NEG : MODE_SLIP_POS;
+    }
+#endif
+    if (p[0] < BS_R(0.0))
+        return MODE_TAKEOFF;
+#if BS_WITH_FRICTION
+    if (mode == MODE_SLIP_POS ? xi[1] < BS_R(0.0) : (mode == MODE_SLIP_NEG && xi[1] > BS_R(0.0)))
+        return MODE_STICK;
+#endif
+    return mode;
+}
+
+/* Moves the first contact whose trial solution breaks its law (Murty's
+ * least-index rule). Returns 1 if a contact moved, 0 if all laws hold. */
 static int correct_modes(const bs_contact_set *set, int *mode)
 {
     int a;
-
     for (a = 0; a < set->count; ++a) {
-        const bs_real *p = &set->percussion[2 * a];
-        const bs_real limit = set->mu[a] * p[0];
-        bs_real xi[2];
-        int next = mode[a];
-        velocity(set, a, xi);
-        /* a stick breach first: a nearly singular stick pair gives wild P_T
-         * and P_N of either sign, and only the slip row tames P_T */
-        if (mode[a] == MODE_TAKEOFF)
-            next = xi[0] < BS_R(0.0) ? MODE_STICK : MODE_TAKEOFF;
-        else if (mode[a] == MODE_STICK && (p[1] > limit || p[1] < -limit))
-            next = p[1] > BS_R(0.0) ? MODE_SLIP_NEG : MODE_SLIP_POS;
-        else if (p[0] < BS_R(0.0))
-            next = MODE_TAKEOFF;
-        else if (mode[a] == MODE_SLIP_POS ? xi[1] < BS_R(0.0) : xi[1] > BS_R(0.0))
-            next = MODE_STICK;
+        const int next = corrected_mode(set, a, mode[a]);
         if (next != mode[a]) {
             mode[a] = next;
             return 1;
@@ -282,17 +318,12 @@ static int correct_modes(const bs_contact_set *set, int *mode)
     return 0;
 }
 
-#define SUBSPACE_TRIES 8 /* mode sets tried per subspace step */
-
-/* Subspace step: rounds of "solve the modes' linear system, move the first
- * contact whose law it breaks", until the laws hold, a mode set repeats (the
- * rounds would cycle) or SUBSPACE_TRIES sets were tried. Keeps the best P
- * seen (smallest residual). */
+/* Subspace step (see the header comment); keeps the best P seen. */
 static void try_subspace(bs_contact_set *set, const bs_real *step, bs_real *best_residual, bs_real *norm)
 {
-    const int rows = 2 * set->count;
-    bs_real best[2 * BS_MAX_CONTACTS];
-    bs_real trial[2 * BS_MAX_CONTACTS];
+    const int rows = ROWS * set->count;
+    bs_real best[MAX_ROWS];
+    bs_real trial[MAX_ROWS];
     int tried[SUBSPACE_TRIES][BS_MAX_CONTACTS];
     int mode[BS_MAX_CONTACTS];
     int count, j;
@@ -300,7 +331,7 @@ static void try_subspace(bs_contact_set *set, const bs_real *step, bs_real *best
     for (j = 0; j < rows; ++j)
         best[j] = set->percussion[j];
     for (j = 0; j < set->count; ++j)
-        mode[j] = mode_of(set->mu[j], &set->percussion[2 * j]);
+        mode[j] = mode_of(set, j);
     for (count = 0; count < SUBSPACE_TRIES; ++count) {
         bs_real trial_residual, trial_norm;
         int seen, earlier;
@@ -336,7 +367,6 @@ bs_pgs_result bs_pgs_solve(bs_contact_set *set, int max_sweeps, bs_real tol_rel,
     int a;
 
     step_sizes(set, step);
-
     result.sweeps = 0;
     for (;;) { /* at least one sweep: the warm start is not trusted unchecked */
         for (a = 0; a < set->count; ++a)

@@ -83,7 +83,7 @@ static int check_slider_contact(const bs_scene *s, const char **field)
 {
     if (!is_finite(s->mass_inv) || !(s->mass_inv > BS_R(0.0)))
         return fail(field, "mass_inv");
-    if (!is_finite(s->inertia_inv) || !(s->inertia_inv > BS_R(0.0)))
+    if (!is_finite(s->inertia_inv) || !(s->inertia_inv >= BS_R(0.0)))
         return fail(field, "inertia_inv");
     if (!is_finite(s->gravity[0]) || !is_finite(s->gravity[1]))
         return fail(field, "gravity");
@@ -113,6 +113,29 @@ static int check_numerics(const bs_scene *s, const char **field)
     return 0;
 }
 
+/* A build compiled for one scene must not be handed a scene that needs
+ * what it left out. */
+static int check_compiled_features(const bs_scene *s, const char **field)
+{
+#ifdef BS_SCENE_MODES
+    if (s->n_modes != BS_SCENE_MODES)
+        return fail(field, "n_modes");
+#endif
+    if (!BS_WITH_FRICTION && s->mu != BS_R(0.0))
+        return fail(field, "mu");
+    if (!BS_WITH_RESTITUTION && s->e_n != BS_R(0.0))
+        return fail(field, "e_n");
+    if (!BS_WITH_GRAVITY && (s->gravity[0] != BS_R(0.0) || s->gravity[1] != BS_R(0.0)))
+        return fail(field, "gravity");
+    if (!BS_WITH_ROTATION && s->inertia_inv != BS_R(0.0))
+        return fail(field, "inertia_inv");
+    if (!BS_WITH_STRETCHING && s->stretch_norm != BS_R(0.0))
+        return fail(field, "stretch_norm");
+    (void)s;
+    (void)field;
+    return 0;
+}
+
 bs_status bs_scene_check(const bs_scene *scene, const char **field)
 {
     int i;
@@ -120,7 +143,8 @@ bs_status bs_scene_check(const bs_scene *scene, const char **field)
     if (!scene)
         return BS_E_NULL;
     if (check_modes(scene, field) || check_geometry(scene, field)
-        || check_slider_contact(scene, field) || check_numerics(scene, field))
+        || check_slider_contact(scene, field) || check_numerics(scene, field)
+        || check_compiled_features(scene, field))
         return BS_E_SCENE;
     /* explicit stability limit of the smooth part: omega_max dt < 2 */
     for (i = 0; i < scene->n_modes; ++i)

@@ -25,7 +25,8 @@ typedef struct bs_scene {
     bs_real damping[BS_MAX_MODES];       /* 2 D omega_k [1/s], >= 0 */
     bs_real gamma[BS_MAX_MODES];         /* gamma_k = rho A L int phi_k [sqrt(kg)] */
     /* Bending-stretching: S = sqrt(k_ax / (2 L^2)) I with I_ij = int phi_i,xi phi_j,xi,
-     * so that N(q) = (q^T S q) S q. Symmetric, positive semidefinite. */
+     * so that N(q) = (q^T S q) S q. Symmetric, positive semidefinite; all zero
+     * when the scene leaves the term out. */
     bs_real stretch[BS_MAX_MODES][BS_MAX_MODES];   /* [1/(m sqrt(kg))] */
     bs_real stretch_norm;                /* largest eigenvalue of S, >= 0 */
     bs_real phi_sensor[BS_MAX_MODES];    /* phi_k(4/7) [1/sqrt(kg)]: w(4L/7) = sum phi_k q_k */
@@ -46,7 +47,7 @@ typedef struct bs_scene {
 
     /* Slider. */
     bs_real mass_inv;                    /* 1/m [1/kg], > 0 */
-    bs_real inertia_inv;                 /* 1/J_C [1/(kg m^2)], > 0 */
+    bs_real inertia_inv;                 /* 1/J_C [1/(kg m^2)], >= 0 (0: rotation locked) */
     bs_real gravity[2];                  /* acceleration of gravity in the beam frame (x, z) [m/s^2] */
 
     /* Contact laws. */

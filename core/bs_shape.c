@@ -15,7 +15,7 @@
 
 void bs_shape_eval(const bs_scene *scene, bs_real x, bs_real *phi, bs_real *slope)
 {
-    const int n = scene->n_modes;
+    const int n = BS_NMODES(scene);
     const bs_real scale = scene->shape_scale;
     const bs_real slope_scale = BS_R(2.0) * scale;
     bs_real t;

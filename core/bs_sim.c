@@ -18,6 +18,9 @@
  * x_C moves by a few ulps of float per step; it is accumulated as an unevaluated
  * sum x_C + x_c_low (Knuth's TwoSum) so that float rounding does not bias the
  * slow drift (MODEL.md 9.2).
+ *
+ * Features a compiled scene leaves out (bs_config.h) drop out here: gravity,
+ * restitution (no pre-step velocities needed), rotation (beta stays 0), PCS.
  */
 #include "beamslider.h"
 #include "bs_beam.h"
@@ -35,6 +38,14 @@ static void add_compensated(bs_real *sum, bs_real *low, bs_real increment)
     *sum = s;
 }
 
+static void clear_percussions(bs_sim *sim)
+{
+    int k, r;
+    for (k = 0; k < BS_MAX_CONTACTS; ++k)
+        for (r = 0; r < BS_ROWS; ++r)
+            sim->percussion[k][r] = BS_R(0.0);
+}
+
 bs_status bs_sim_init(bs_sim *sim, const bs_scene *scene, bs_model model, bs_real s0)
 {
     bs_status status;
@@ -45,7 +56,7 @@ bs_status bs_sim_init(bs_sim *sim, const bs_scene *scene, bs_model model, bs_rea
     status = bs_scene_check(scene, 0);
     if (status != BS_OK)
         return status;
-    if (model != BS_MODEL_FREE && model != BS_MODEL_PCS)
+    if (model != BS_MODEL_FREE && (model != BS_MODEL_PCS || !BS_WITH_PCS))
         return BS_E_ARGUMENT;
     if (model == BS_MODEL_FREE
             ? !(s0 * scene->length >= scene->stop_min && s0 * scene->length <= scene->stop_max)
@@ -71,10 +82,7 @@ bs_status bs_sim_init(bs_sim *sim, const bs_scene *scene, bs_model model, bs_rea
     for (i = 0; i < 3; ++i)
         sim->slider_velocity[i] = BS_R(0.0);
     sim->x_c_low = BS_R(0.0);
-    for (i = 0; i < BS_MAX_CONTACTS; ++i) {
-        sim->percussion[i][0] = BS_R(0.0);
-        sim->percussion[i][1] = BS_R(0.0);
-    }
+    clear_percussions(sim);
     sim->report.active = 0;
     sim->report.sweeps = 0;
     sim->report.residual = BS_R(0.0);
@@ -94,22 +102,26 @@ bs_status bs_sim_set_pcs_position(bs_sim *sim, bs_real s)
 }
 
 /* Contact solve of step 3; updates u_beam, u_slider (free velocities on entry). */
-static void solve_contacts(bs_sim *sim, const bs_real base_term[BS_MAX_CONTACTS][2],
+static void solve_contacts(bs_sim *sim, const bs_real base_term[BS_MAX_CONTACTS][BS_ROWS],
                            bs_real *u_beam, bs_real *u_slider)
 {
     const bs_scene *scene = sim->scene;
     bs_contact_set *set = &sim->contacts;
-    bs_real gamma_before[2 * BS_MAX_CONTACTS];
     bs_pgs_result result;
-    int a;
+    int a, r;
 
-    bs_contact_velocity(scene, set, sim->u_beam, sim->slider_velocity, base_term, gamma_before);
     bs_contact_velocity(scene, set, u_beam, u_slider, base_term, set->free_velocity);
-    for (a = 0; a < set->count; ++a) {
-        set->free_velocity[2 * a] += scene->e_n * gamma_before[2 * a];
-        set->percussion[2 * a] = sim->percussion[set->id[a]][0];     /* warm start */
-        set->percussion[2 * a + 1] = sim->percussion[set->id[a]][1];
+#if BS_WITH_RESTITUTION
+    {
+        bs_real gamma_before[BS_ROWS * BS_MAX_CONTACTS];
+        bs_contact_velocity(scene, set, sim->u_beam, sim->slider_velocity, base_term, gamma_before);
+        for (a = 0; a < set->count; ++a)
+            set->free_velocity[BS_ROWS * a] += scene->e_n * gamma_before[BS_ROWS * a];
     }
+#endif
+    for (a = 0; a < set->count; ++a) /* warm start */
+        for (r = 0; r < BS_ROWS; ++r)
+            set->percussion[BS_ROWS * a + r] = sim->percussion[set->id[a]][r];
     bs_contact_delassus(scene, set);
     result = bs_pgs_solve(set, scene->pgs_max_sweeps, scene->pgs_tol_rel, scene->pgs_tol_abs);
     bs_contact_apply(scene, set, u_beam, u_slider);
@@ -121,22 +133,22 @@ static void solve_contacts(bs_sim *sim, const bs_real base_term[BS_MAX_CONTACTS]
 bs_status bs_sim_step(bs_sim *sim)
 {
     const bs_scene *scene;
-    bs_real dt, half;
+    bs_real dt, half, stiffness;
     bs_real q_mid[BS_MAX_MODES];
     bs_real force[BS_MAX_MODES];
     bs_real u_beam[BS_MAX_MODES];
     bs_real slider_mid[3];
     bs_real u_slider[3];
-    bs_real base_term[BS_MAX_CONTACTS][2];
+    bs_real base_term[BS_MAX_CONTACTS][BS_ROWS];
     bs_real x_new, x_low_new, check;
     bs_contact_frame frame;
     unsigned active = 0;
-    int n, k, a;
+    int n, k, a, r;
 
     if (!sim || !sim->scene)
         return BS_E_NULL;
     scene = sim->scene;
-    n = scene->n_modes;
+    n = BS_NMODES(scene);
     dt = scene->dt;
     half = BS_R(0.5) * dt;
 
@@ -146,20 +158,23 @@ bs_status bs_sim_step(bs_sim *sim)
         q_mid[k] = sim->q_beam[k] + half * sim->u_beam[k];
     for (k = 0; k < 3; ++k)
         slider_mid[k] = sim->slider[k] + half * sim->slider_velocity[k];
-    if (!((sim->omega_sq_max + bs_beam_force(scene, q_mid, sim->u_beam, frame.base.acceleration, force))
-              * dt * dt < BS_R(4.0)))
+    stiffness = sim->omega_sq_max + bs_beam_force(scene, q_mid, sim->u_beam, frame.base.acceleration, force);
+    if (!(stiffness * dt * dt < BS_R(4.0)))
         return BS_E_UNSTABLE;
 
     /* 2. smooth velocity update */
     for (k = 0; k < n; ++k)
         u_beam[k] = sim->u_beam[k] + dt * force[k];
-    u_slider[0] = sim->slider_velocity[0] + dt * scene->gravity[0];
-    u_slider[1] = sim->slider_velocity[1] + dt * scene->gravity[1];
-    u_slider[2] = sim->slider_velocity[2];
+    for (k = 0; k < 3; ++k)
+        u_slider[k] = sim->slider_velocity[k];
+#if BS_WITH_GRAVITY
+    u_slider[0] += dt * scene->gravity[0];
+    u_slider[1] += dt * scene->gravity[1];
+#endif
 
     /* 3. contacts at the midpoint */
     frame.q_beam = q_mid;
-    frame.x_kinematic = sim->model == BS_MODEL_PCS ? sim->x_pcs : slider_mid[0];
+    frame.x_kinematic = BS_WITH_PCS && sim->model == BS_MODEL_PCS ? sim->x_pcs : slider_mid[0];
     frame.x_stops = slider_mid[0];
     frame.z = slider_mid[1];
     frame.beta = slider_mid[2];
@@ -196,15 +211,12 @@ bs_status bs_sim_step(bs_sim *sim)
     sim->slider[2] = slider_mid[2];
     for (k = 0; k < 3; ++k)
         sim->slider_velocity[k] = u_slider[k];
-    for (k = 0; k < BS_MAX_CONTACTS; ++k) {
-        sim->percussion[k][0] = BS_R(0.0);
-        sim->percussion[k][1] = BS_R(0.0);
-    }
+    clear_percussions(sim);
     for (a = 0; a < sim->contacts.count; ++a) {
         const int id = sim->contacts.id[a];
         active |= 1u << id;
-        sim->percussion[id][0] = sim->contacts.percussion[2 * a];
-        sim->percussion[id][1] = sim->contacts.percussion[2 * a + 1];
+        for (r = 0; r < BS_ROWS; ++r)
+            sim->percussion[id][r] = sim->contacts.percussion[BS_ROWS * a + r];
     }
     sim->report.active = active;
     sim->step += 1;
@@ -221,7 +233,7 @@ bs_real bs_sim_sensor(const bs_sim *sim)
 {
     bs_real w = BS_R(0.0);
     int k;
-    for (k = 0; k < sim->scene->n_modes; ++k)
+    for (k = 0; k < BS_NMODES(sim->scene); ++k)
         w += sim->scene->phi_sensor[k] * sim->q_beam[k];
     return w;
 }
@@ -285,10 +297,7 @@ bs_status bs_sim_set_state(bs_sim *sim, const bs_real *q_beam, const bs_real *u_
     }
     if (slider)
         sim->x_c_low = BS_R(0.0);
-    for (k = 0; k < BS_MAX_CONTACTS; ++k) {
-        sim->percussion[k][0] = BS_R(0.0);
-        sim->percussion[k][1] = BS_R(0.0);
-    }
+    clear_percussions(sim);
     return BS_OK;
 }
 

@@ -1,9 +1,12 @@
 /* scene_build.c - modal precomputation and scene assembly, in double.
  *
- * From the parameters of MODEL.md 8:
+ * From the parameters of MODEL.md 8, in double (scene_data), then rounded to
+ * bs_real (to_core):
  *   omega_k, gamma_k, phi_k(4/7), I_ij          host/modal.c
  *   mode-shape pieces                           host/shape_fit.c
- *   S = sqrt(k_ax / 2L^2) I,  |S| by power iteration (S is positive semidefinite)
+ *   S = sqrt(k_ax / 2L^2) I,  |S| by power iteration (S is positive semidefinite);
+ *   S = 0 when the scene leaves stretching out
+ *   1/J_C, or 0 when the scene locks the slider's rotation
  *   R = r_h h;  corners r_CP,i = P_i + (0, d): P1 (-B/2, R/2), P2 (-B/2, -R/2),
  *               P3 (B/2, -R/2), P4 (B/2, R/2)
  *   clamp stops x_C in [B/2, L - B/2] (the slot corners reach the clamp faces)
@@ -16,10 +19,15 @@
 #include <stdio.h>
 #include <string.h>
 
-double scene_fit_tolerance(void)
+double scene_fit_tolerance_for(int is_float)
 {
     /* a few ulps of the working precision; double: far below every other error */
-    return BS_REAL_FLOAT ? 1e-7 : 1e-9;
+    return is_float ? 1e-7 : 1e-9;
+}
+
+double scene_fit_tolerance(void)
+{
+    return scene_fit_tolerance_for(BS_REAL_FLOAT);
 }
 
 static double largest_eigenvalue(const double s[BS_MAX_MODES][BS_MAX_MODES], int n)
@@ -53,39 +61,27 @@ static double largest_eigenvalue(const double s[BS_MAX_MODES][BS_MAX_MODES], int
     return value;
 }
 
-static void fill_modes(const scene_params *p, const scene_model *model, bs_scene *scene)
+static void compute_modes(const scene_params *p, const modal_set *modes, scene_data *d)
 {
-    const modal_set *modes = &model->modes;
-    const double stretch_scale = sqrt(modes->k_axial_total / (2.0 * p->beam.length * p->beam.length));
-    double stretch[BS_MAX_MODES][BS_MAX_MODES];
+    const double stretch_scale = p->stretching ? sqrt(modes->k_axial_total / (2.0 * p->beam.length * p->beam.length)) : 0.0;
     int i;
     int j;
-    int c;
 
-    scene->n_modes = modes->n;
+    d->n_modes = modes->n;
     for (i = 0; i < modes->n; ++i) {
-        double phi, slope;
-        scene->omega_sq[i] = (bs_real)(modes->omega[i] * modes->omega[i]);
-        scene->damping[i] = (bs_real)(2.0 * p->damping_ratio * modes->omega[i]);
-        scene->gamma[i] = (bs_real)modes->gamma[i];
-        modal_shape(modes, i, 4.0 / 7.0, &phi, &slope);
-        scene->phi_sensor[i] = (bs_real)phi;
-        for (j = 0; j < modes->n; ++j) {
-            stretch[i][j] = stretch_scale * modes->slope_gram[i][j];
-            scene->stretch[i][j] = (bs_real)stretch[i][j];
-        }
+        double slope;
+        d->omega_sq[i] = modes->omega[i] * modes->omega[i];
+        d->damping[i] = 2.0 * p->damping_ratio * modes->omega[i];
+        d->gamma[i] = modes->gamma[i];
+        modal_shape(modes, i, 4.0 / 7.0, &d->phi_sensor[i], &slope);
+        for (j = 0; j < modes->n; ++j)
+            d->stretch[i][j] = stretch_scale * modes->slope_gram[i][j];
     }
     /* a hair above the true value: the stability check needs an upper bound */
-    scene->stretch_norm = (bs_real)(largest_eigenvalue(stretch, modes->n) * (1.0 + 1e-6));
-    scene->shape_pieces = model->fit.pieces;
-    scene->shape_scale = (bs_real)(model->fit.pieces / p->beam.length);
-    for (j = 0; j < model->fit.pieces; ++j)
-        for (i = 0; i < modes->n; ++i)
-            for (c = 0; c < BS_SHAPE_COEFS; ++c)
-                scene->shape_coef[j][i][c] = (bs_real)model->fit.coef[j][i][c];
+    d->stretch_norm = largest_eigenvalue(d->stretch, modes->n) * (1.0 + 1e-6);
 }
 
-static void fill_slider(const scene_params *p, bs_scene *scene)
+static void compute_slider(const scene_params *p, scene_data *d)
 {
     const double pi = 3.14159265358979323846;
     const double half_width = 0.5 * p->slot_width;
@@ -96,34 +92,80 @@ static void fill_slider(const scene_params *p, bs_scene *scene)
         { half_width, -half_slot }, { half_width, half_slot } };
     int i;
 
-    scene->length = (bs_real)p->beam.length;
-    scene->half_thickness = (bs_real)(0.5 * p->beam.thickness);
+    d->length = p->beam.length;
+    d->half_thickness = 0.5 * p->beam.thickness;
     for (i = 0; i < BS_CORNERS; ++i) {
-        scene->corner[i][0] = (bs_real)corner[i][0];
-        scene->corner[i][1] = (bs_real)(corner[i][1] + p->com_offset);
+        d->corner[i][0] = corner[i][0];
+        d->corner[i][1] = corner[i][1] + p->com_offset;
     }
-    scene->com_offset = (bs_real)p->com_offset;
-    scene->stop_min = (bs_real)half_width;
-    scene->stop_max = (bs_real)(p->beam.length - half_width);
-    scene->mass_inv = (bs_real)(1.0 / p->slider_mass);
-    scene->inertia_inv = (bs_real)(1.0 / p->slider_inertia);
-    scene->gravity[0] = (bs_real)(-p->gravity * sin(tilt));
-    scene->gravity[1] = (bs_real)(-p->gravity * cos(tilt));
-    scene->mu = (bs_real)p->mu;
-    scene->e_n = (bs_real)p->e_n;
+    d->com_offset = p->com_offset;
+    d->stop_min = half_width;
+    d->stop_max = p->beam.length - half_width;
+    d->mass_inv = 1.0 / p->slider_mass;
+    d->inertia_inv = p->rotation ? 1.0 / p->slider_inertia : 0.0; /* 0: locked */
+    d->gravity[0] = -p->gravity * sin(tilt);
+    d->gravity[1] = -p->gravity * cos(tilt);
+    d->mu = p->mu;
+    d->e_n = p->e_n;
 }
 
-static void fill_numerics(const scene_params *p, bs_scene *scene)
+static void compute_numerics(const scene_params *p, scene_data *d)
 {
     const double omega = 2.0 * 3.14159265358979323846 * p->frequency;
-    scene->base_accel = (bs_real)p->acceleration;
-    scene->base_velocity = (bs_real)(p->acceleration / omega);
-    scene->base_displacement = (bs_real)(p->acceleration / (omega * omega));
-    scene->phase_step_half = (uint64_t)llround(ldexp(0.5 * p->frequency * p->dt, 64));
-    scene->dt = (bs_real)p->dt;
-    scene->pgs_max_sweeps = p->pgs_max_sweeps;
-    scene->pgs_tol_rel = (bs_real)p->pgs_tol_rel;
-    scene->pgs_tol_abs = (bs_real)p->pgs_tol_abs;
+    d->base_accel = p->acceleration;
+    d->base_velocity = p->acceleration / omega;
+    d->base_displacement = p->acceleration / (omega * omega);
+    d->phase_step_half = (uint64_t)llround(ldexp(0.5 * p->frequency * p->dt, 64));
+    d->dt = p->dt;
+    d->pgs_max_sweeps = p->pgs_max_sweeps;
+    d->pgs_tol_rel = p->pgs_tol_rel;
+    d->pgs_tol_abs = p->pgs_tol_abs;
+}
+
+/* Rounds the double values into the core's bs_real scene. */
+static void to_core(const scene_data *d, const shape_fit *fit, bs_scene *scene)
+{
+    int i, j, c;
+
+    scene->n_modes = d->n_modes;
+    for (i = 0; i < d->n_modes; ++i) {
+        scene->omega_sq[i] = (bs_real)d->omega_sq[i];
+        scene->damping[i] = (bs_real)d->damping[i];
+        scene->gamma[i] = (bs_real)d->gamma[i];
+        scene->phi_sensor[i] = (bs_real)d->phi_sensor[i];
+        for (j = 0; j < d->n_modes; ++j)
+            scene->stretch[i][j] = (bs_real)d->stretch[i][j];
+    }
+    scene->stretch_norm = (bs_real)d->stretch_norm;
+    scene->shape_pieces = fit->pieces;
+    scene->shape_scale = (bs_real)(fit->pieces / d->length);
+    for (j = 0; j < fit->pieces; ++j)
+        for (i = 0; i < d->n_modes; ++i)
+            for (c = 0; c < BS_SHAPE_COEFS; ++c)
+                scene->shape_coef[j][i][c] = (bs_real)fit->coef[j][i][c];
+    scene->length = (bs_real)d->length;
+    scene->half_thickness = (bs_real)d->half_thickness;
+    for (i = 0; i < BS_CORNERS; ++i) {
+        scene->corner[i][0] = (bs_real)d->corner[i][0];
+        scene->corner[i][1] = (bs_real)d->corner[i][1];
+    }
+    scene->com_offset = (bs_real)d->com_offset;
+    scene->stop_min = (bs_real)d->stop_min;
+    scene->stop_max = (bs_real)d->stop_max;
+    scene->mass_inv = (bs_real)d->mass_inv;
+    scene->inertia_inv = (bs_real)d->inertia_inv;
+    scene->gravity[0] = (bs_real)d->gravity[0];
+    scene->gravity[1] = (bs_real)d->gravity[1];
+    scene->mu = (bs_real)d->mu;
+    scene->e_n = (bs_real)d->e_n;
+    scene->base_accel = (bs_real)d->base_accel;
+    scene->base_velocity = (bs_real)d->base_velocity;
+    scene->base_displacement = (bs_real)d->base_displacement;
+    scene->phase_step_half = d->phase_step_half;
+    scene->dt = (bs_real)d->dt;
+    scene->pgs_max_sweeps = d->pgs_max_sweeps;
+    scene->pgs_tol_rel = (bs_real)d->pgs_tol_rel;
+    scene->pgs_tol_abs = (bs_real)d->pgs_tol_abs;
 }
 
 /* Cross-field checks that need derived quantities. */
@@ -189,9 +231,10 @@ int scene_build(const scene_file *file, bs_scene *scene, scene_model *model, cha
                  BS_SHAPE_MAX_PIECES, scene_fit_tolerance(), model->fit.error_slope);
         return -1;
     }
-    fill_modes(p, model, scene);
-    fill_slider(p, scene);
-    fill_numerics(p, scene);
+    compute_modes(p, &model->modes, &model->data);
+    compute_slider(p, &model->data);
+    compute_numerics(p, &model->data);
+    to_core(&model->data, &model->fit, scene);
     status = bs_scene_check(scene, &field);
     if (status != BS_OK) { /* the host checks above should make this unreachable */
         snprintf(err, size, "%s: core refused the scene: %s (field %s)", file->files[0],

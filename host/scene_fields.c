@@ -7,13 +7,22 @@
 #include <stdio.h>
 
 #define REAL(section, key, member, low, high, low_open, high_open, unit, meaning) \
-    { section, key, FIELD_REAL, offsetof(scene_params, member), low, high, low_open, high_open, unit, meaning }
+    { section, key, FIELD_REAL, offsetof(scene_params, member), low, high, low_open, high_open, unit, meaning, 0, 0 }
 #define INT(section, key, member, low, high, unit, meaning) \
-    { section, key, FIELD_INT, offsetof(scene_params, member), low, high, 0, 0, unit, meaning }
+    { section, key, FIELD_INT, offsetof(scene_params, member), low, high, 0, 0, unit, meaning, 0, 0 }
+#define CHOICE(section, key, member, choices, default_text, meaning) \
+    { section, key, FIELD_CHOICE, offsetof(scene_params, member), 0, 0, 0, 0, "", meaning, choices, default_text }
+#define TEXT(section, key, member, meaning) \
+    { section, key, FIELD_TEXT, offsetof(scene_params, member), 0, 0, 0, 0, "", meaning, 0, "" }
+
+/* Choice lists: the index of the name is the stored value. */
+static const char *const models[] = { "free", "pcs", 0 };           /* = bs_model */
+static const char *const rotations[] = { "locked", "free", 0 };     /* rotation = 1: free */
+static const char *const switches[] = { "off", "on", 0 };
 
 const field_spec scene_fields[] = {
-    { "scene", "name", FIELD_TEXT, offsetof(scene_params, name), 0, 0, 0, 0, "", "scene name" },
-    { "scene", "description", FIELD_TEXT, offsetof(scene_params, description), 0, 0, 0, 0, "", "one line on what the scene shows" },
+    TEXT("scene", "name", name, "scene name"),
+    TEXT("scene", "description", description, "one line on what the scene shows"),
     REAL("beam", "length", beam.length, 0, INFINITY, 1, 1, "m", "free length L between the clamps"),
     REAL("beam", "thickness", beam.thickness, 0, INFINITY, 1, 1, "m", "thickness h"),
     REAL("beam", "density", beam.density, 0, INFINITY, 1, 1, "kg/m^3", "density rho"),
@@ -27,6 +36,7 @@ const field_spec scene_fields[] = {
     REAL("slider", "slot_width", slot_width, 0, INFINITY, 1, 1, "m", "distance B between the slot's contact corners"),
     REAL("slider", "com_offset", com_offset, -INFINITY, INFINITY, 1, 1, "m", "distance d of the centre of mass below the slot centre"),
     REAL("slider", "play_ratio", play_ratio, 1, INFINITY, 0, 1, "", "slot height over beam thickness r_h = R/h"),
+    CHOICE("slider", "rotation", rotation, rotations, "free", "free | locked (a guided slider that cannot tilt)"),
     REAL("contact", "friction", mu, 0, INFINITY, 0, 1, "", "Coulomb friction coefficient mu"),
     REAL("contact", "restitution", e_n, 0, 1, 0, 0, "", "Newton normal restitution e_N"),
     REAL("environment", "gravity", gravity, 0, INFINITY, 0, 1, "m/s^2", "acceleration of gravity g"),
@@ -34,14 +44,15 @@ const field_spec scene_fields[] = {
     REAL("excitation", "frequency", frequency, 0, INFINITY, 1, 1, "Hz", "excitation frequency f_ex"),
     REAL("excitation", "acceleration", acceleration, 0, INFINITY, 0, 1, "m/s^2", "base acceleration amplitude a"),
     INT("numerics", "modes", modes, 1, BS_MAX_MODES, "", "number of beam modes N"),
+    CHOICE("numerics", "stretching", stretching, switches, "on", "on | off: the cubic bending-stretching term"),
     REAL("numerics", "dt", dt, 0, INFINITY, 1, 1, "s", "time step (explicit limit: omega_max dt < 2)"),
     INT("numerics", "pgs_max_sweeps", pgs_max_sweeps, 1, 1000000000, "", "cap on contact-solve sweeps per step"),
     REAL("numerics", "pgs_tol_rel", pgs_tol_rel, 0, INFINITY, 0, 1, "", "relative tolerance of the contact solve"),
     REAL("numerics", "pgs_tol_abs", pgs_tol_abs, 0, INFINITY, 0, 1, "N s", "absolute tolerance of the contact solve"),
     REAL("run", "s0", s0, 0, 1, 0, 0, "", "start position x_C / L (PCS: prescribed position)"),
     REAL("run", "t_end", t_end, 0, INFINITY, 1, 1, "s", "simulated time"),
-    { "run", "model", FIELD_MODEL, offsetof(scene_params, model), 0, 0, 0, 0, "", "free | pcs" },
-    { 0, 0, FIELD_REAL, 0, 0, 0, 0, 0, 0, 0 }
+    CHOICE("run", "model", model, models, 0, "free | pcs"),
+    { 0, 0, FIELD_REAL, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
 };
 
 void field_range_text(const field_spec *f, char *out, size_t size)
@@ -49,8 +60,11 @@ void field_range_text(const field_spec *f, char *out, size_t size)
     char low[32];
     char high[32];
 
-    if (f->kind == FIELD_MODEL) {
-        snprintf(out, size, "one of: free, pcs");
+    if (f->kind == FIELD_CHOICE) {
+        const char *const *name;
+        size_t used = (size_t)snprintf(out, size, "one of:");
+        for (name = f->choices; *name && used < size; ++name)
+            used += (size_t)snprintf(out + used, size - used, "%s %s", name == f->choices ? "" : ",", *name);
         return;
     }
     if (f->kind == FIELD_TEXT) {

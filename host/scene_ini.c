@@ -71,16 +71,15 @@ static int assign(scene_params *params, const field_spec *f, const char *value, 
         strcpy(target, value);
         return 0;
     }
-    if (f->kind == FIELD_MODEL) {
-        if (!strcmp(value, "free"))
-            *(int *)target = BS_MODEL_FREE;
-        else if (!strcmp(value, "pcs"))
-            *(int *)target = BS_MODEL_PCS;
-        else {
-            snprintf(why, size, "unknown model; allowed: %s", range);
-            return -1;
-        }
-        return 0;
+    if (f->kind == FIELD_CHOICE) {
+        int i;
+        for (i = 0; f->choices[i]; ++i)
+            if (!strcmp(value, f->choices[i])) {
+                *(int *)target = i;
+                return 0;
+            }
+        snprintf(why, size, "unknown value; allowed: %s", range);
+        return -1;
     }
     if (*value == '\0') {
         snprintf(why, size, "no value; allowed: %s", range);
@@ -295,12 +294,20 @@ int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
         scene->set_file[i] = -1;
     ini_allow_multiline = 0; /* an indented line is an error, not a silent continuation */
     default_name(scene, path);
+    for (i = 0; scene_fields[i].key; ++i) { /* optional fields start at their defaults */
+        const field_spec *f = &scene_fields[i];
+        char why[160];
+        if (f->default_text && f->kind != FIELD_TEXT && assign(&scene->params, f, f->default_text, why, sizeof why) != 0) {
+            snprintf(err, err_size, "internal: default of [%s] %s: %s", f->section, f->key, why);
+            return -1;
+        }
+    }
     if (load_file(scene, path, err, err_size) != 0)
         return -1;
     for (i = 0; scene_fields[i].key; ++i) {
         const field_spec *f = &scene_fields[i];
         char range[96];
-        if (scene->set_file[i] >= 0 || f->kind == FIELD_TEXT)
+        if (scene->set_file[i] >= 0 || f->default_text)
             continue;
         field_range_text(f, range, sizeof range);
         snprintf(err, err_size, "%s: missing field [%s] %s (%s; allowed: %s)%s", path, f->section, f->key,
@@ -324,7 +331,7 @@ const char *scene_where(const scene_file *scene, const char *section, const char
 {
     const int i = field_index(section, key);
     if (i < 0 || scene->set_file[i] < 0)
-        snprintf(out, size, "(unset)");
+        snprintf(out, size, "(default)");
     else if (scene->set_line[i] > 0)
         snprintf(out, size, "%s:%d", scene->files[scene->set_file[i]], scene->set_line[i]);
     else

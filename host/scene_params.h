@@ -18,6 +18,7 @@ typedef struct scene_params {
     double slot_width;              /* B [m] */
     double com_offset;              /* d [m] */
     double play_ratio;              /* r_h = R / h */
+    int rotation;                   /* 1: the slider may rotate, 0: locked */
     double mu;                      /* Coulomb friction */
     double e_n;                     /* normal restitution */
     double gravity;                 /* g [m/s^2] */
@@ -25,6 +26,7 @@ typedef struct scene_params {
     double frequency;               /* f_ex [Hz] */
     double acceleration;            /* a [m/s^2] */
     int modes;                      /* N */
+    int stretching;                 /* 1: cubic bending-stretching term, 0: left out */
     double dt;                      /* [s] */
     int pgs_max_sweeps;
     double pgs_tol_rel;
@@ -34,10 +36,11 @@ typedef struct scene_params {
     int model;                      /* bs_model */
 } scene_params;
 
-typedef enum field_kind { FIELD_REAL, FIELD_INT, FIELD_MODEL, FIELD_TEXT } field_kind;
+typedef enum field_kind { FIELD_REAL, FIELD_INT, FIELD_CHOICE, FIELD_TEXT } field_kind;
 
 /* One INI field: where it lives, what it means and its allowed range
- * (low/high, each open or closed). */
+ * (low/high, each open or closed; a FIELD_CHOICE stores the index of its
+ * value in choices). A field with a default may be left out. */
 typedef struct field_spec {
     const char *section;
     const char *key;
@@ -47,6 +50,8 @@ typedef struct field_spec {
     int low_open, high_open;
     const char *unit;
     const char *meaning;
+    const char *const *choices;     /* FIELD_CHOICE: names, NULL-terminated */
+    const char *default_text;       /* NULL: required */
 } field_spec;
 
 /* The table of every field, terminated by an entry with key NULL. */
