@@ -5,6 +5,7 @@
 #   make test         build and run every test, float and double
 #   make bench        steps per second -> docs/performance.md
 #   make fig6-report  the signature move in numbers -> docs/validation.md
+#   make configs      regenerate the compile-time scene headers configs/*.h
 #   make clean
 #
 # Knobs (make VAR=value):
@@ -44,7 +45,7 @@ TEST_LIBS := -lcmocka -lcjson $(HOST_LIBS)
 BUILD_PACKAGES := gcc make libc6-dev libinih-dev
 TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev libcjson-dev binutils
 
-.PHONY: all run test test-one bench fig6-report clean deps-build deps-test
+.PHONY: all run test test-one bench fig6-report configs clean deps-build deps-test
 .SECONDARY:
 
 # build/beamslider is the binary of the REAL of the last `make`.
@@ -81,11 +82,20 @@ test-one: $(TEST_BIN) $(OBJ)/beamslider
 	@set -e; for t in $(TEST_BIN); do echo "== $$t"; ./$$t; done
 	@sh tests/check_core_symbols.sh $(REAL) $(CORE_OBJ)
 	@sh tests/check_cli.sh $(OBJ)/beamslider
+	@sh tests/check_configs.sh $(OBJ)/beamslider
 
 test: deps-test
 	$(MAKE) --no-print-directory REAL=double test-one
 	$(MAKE) --no-print-directory REAL=float test-one
 	@echo "make test: all tests passed (double and float)"
+
+# Compile-time scene headers for embedded builds: every scenario file
+# (mssp2023.ini is only a base).
+SCENE_INIS := $(filter-out configs/mssp2023.ini,$(wildcard configs/*.ini))
+configs: all
+	@set -e; for ini in $(SCENE_INIS); do \
+	    $(BUILD)/beamslider gen $$ini > $${ini%.ini}.h.tmp && mv $${ini%.ini}.h.tmp $${ini%.ini}.h; \
+	    echo "configs: $${ini%.ini}.h"; done
 
 fig6-report:
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider

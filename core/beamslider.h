@@ -42,7 +42,7 @@ typedef struct bs_step_report {
     unsigned active;       /* bit i set: contact i took part (bits 0-3: P1..P4, 4/5: left/right stop) */
     int sweeps;            /* Gauss-Seidel sweeps used (0 when no contact was active) */
     bs_real residual;      /* natural-map residual of the returned percussions [N s] */
-    int converged;         /* residual <= pgs_tol_rel |P|_1 + pgs_tol_abs */
+    int converged;         /* residual <= pgs_tol_rel * scale + pgs_tol_abs (docs/design.md 6) */
 } bs_step_report;
 
 /* Scratch of one step's contact problem; lives in bs_sim, not on the stack.

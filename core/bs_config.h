@@ -24,7 +24,7 @@
 /* Mode count of the loops: the compiled scene's constant (the compiler then
  * unrolls them), or the scene's run-time value. */
 #ifdef BS_SCENE_MODES
-#define BS_NMODES(scene) BS_SCENE_MODES
+#define BS_NMODES(scene) ((void)(scene), BS_SCENE_MODES)
 #else
 #define BS_NMODES(scene) ((scene)->n_modes)
 #endif

@@ -27,7 +27,8 @@
  *   take-off   P_N = 0, P_T = 0
  *   stick      xi_N = 0, xi_T = 0
  *   slip s     xi_N = 0, P_T + s mu P_N = 0
- * solved directly (Gaussian elimination, partial pivoting, 2n <= 12 unknowns).
+ * solved directly (Gaussian elimination, partial pivoting, 2n <= 12 unknowns;
+ * redundant rows get the basic solution, see subspace_solve).
  * If the solution breaks a law, the first breaching contact moves to the mode
  * the breach points to (Murty's least-index rule: moving all at once can
  * cycle) and the system is solved again, until the laws hold, a mode set
@@ -40,7 +41,14 @@
  * current P,
  *   e = sum_i | P_i - prox(P_i - r_i xi_i) |_1,
  * is computed (1-norms: no square roots; the reference's criterion leaves the
- * norm open); the solve stops when e <= tol_rel |P|_1 + tol_abs (converged),
+ * norm open); the solve stops when e <= tol_rel s + tol_abs (converged), with
+ * the percussion scale s = sum_i r_i |c_i|_1 that would stop each contact's
+ * free motion on its own. The reference measures against |P| instead; but
+ * redundant contacts (two corners on one face, a preloaded slot) admit
+ * internal squeeze that cancels in W P, warm starts let it drift from step to
+ * step, and a tolerance relative to |P| then loosens with it until the step
+ * diverges. s comes from the data and cannot be inflated that way. The solve
+ * stops also
  * when max_sweeps sweeps are done, or when a sweep did not lower e (stalled:
  * e is at the floor the precision reaches for this G, which in float can lie
  * above the tolerance for the nearly singular corner pairs). The residual
@@ -156,10 +164,9 @@ static void solve_contact(bs_contact_set *set, const bs_real *step, int a)
 #endif
 }
 
-static bs_real residual(const bs_contact_set *set, const bs_real *step, bs_real *norm)
+static bs_real residual(const bs_contact_set *set, const bs_real *step)
 {
     bs_real sum = BS_R(0.0);
-    bs_real size = BS_R(0.0);
     int a, r;
 
     for (a = 0; a < set->count; ++a) {
@@ -168,12 +175,9 @@ static bs_real residual(const bs_contact_set *set, const bs_real *step, bs_real 
         bs_real projected[ROWS];
         velocity(set, a, xi);
         prox(set, a, step[a], xi, p, projected);
-        for (r = 0; r < ROWS; ++r) {
+        for (r = 0; r < ROWS; ++r)
             sum += magnitude(p[r] - projected[r]);
-            size += magnitude(p[r]);
-        }
     }
-    *norm = size;
     return sum;
 }
 
@@ -191,11 +195,30 @@ static void step_sizes(const bs_contact_set *set, bs_real *step)
     }
 }
 
-bs_real bs_pgs_residual(const bs_contact_set *set, bs_real *norm)
+/* sum_i r_i |c_i|_1: the percussion that would stop each contact's free
+ * motion on its own. */
+static bs_real percussion_scale(const bs_contact_set *set, const bs_real *step)
+{
+    bs_real scale = BS_R(0.0);
+    int a, r;
+    for (a = 0; a < set->count; ++a)
+        for (r = 0; r < ROWS; ++r)
+            scale += step[a] * magnitude(set->free_velocity[ROWS * a + r]);
+    return scale;
+}
+
+bs_real bs_pgs_residual(const bs_contact_set *set)
 {
     bs_real step[BS_MAX_CONTACTS];
     step_sizes(set, step);
-    return residual(set, step, norm);
+    return residual(set, step);
+}
+
+bs_real bs_pgs_scale(const bs_contact_set *set)
+{
+    bs_real step[BS_MAX_CONTACTS];
+    step_sizes(set, step);
+    return percussion_scale(set, step);
 }
 
 /* Mode contact a shows at percussion p. */
@@ -214,14 +237,20 @@ static int mode_of(const bs_contact_set *set, int a)
     return MODE_STICK;
 }
 
-/* Solves the linear system the modes define into trial. Returns 0, or -1
- * when it is singular. */
-static int subspace_solve(const bs_contact_set *set, const int *mode, bs_real *trial)
+/* Solves the linear system the modes define into trial, by Gaussian
+ * elimination to row echelon form with partial pivoting. A column whose best
+ * pivot is below 16 eps of the column's size is taken as dependent on the
+ * others (redundant contacts: two corners of one face sticking, a preloaded
+ * slot) and its unknown set to 0: the basic solution, instead of one whose
+ * huge components cancel in W P and poison the next warm start. Whether the
+ * result obeys the contact laws is for the residual to say. */
+static void subspace_solve(const bs_contact_set *set, const int *mode, bs_real *trial)
 {
     const int rows = ROWS * set->count;
     bs_real m[MAX_ROWS][MAX_ROWS + 1]; /* [A | b] */
-    bs_real inverse[MAX_ROWS];         /* 1 / pivots */
-    int i, j, col;
+    bs_real inverse[MAX_ROWS];         /* 1 / pivot of each echelon row */
+    int pivot_column[MAX_ROWS];
+    int i, j, col, rank = 0;
 
     for (i = 0; i < set->count; ++i) {
         int r;
@@ -247,33 +276,39 @@ static int subspace_solve(const bs_contact_set *set, const int *mode, bs_real *t
         }
 #endif
     }
-    for (col = 0; col < rows; ++col) {
-        int pivot = col;
-        for (i = col + 1; i < rows; ++i)
+    for (col = 0; col < rows && rank < rows; ++col) {
+        bs_real size = BS_R(0.0);
+        int pivot = rank;
+        for (i = 0; i < rows; ++i)
+            size += magnitude(m[i][col]);
+        for (i = rank + 1; i < rows; ++i)
             if (magnitude(m[i][col]) > magnitude(m[pivot][col]))
                 pivot = i;
-        if (m[pivot][col] == BS_R(0.0))
-            return -1;
-        if (pivot != col)
+        if (!(magnitude(m[pivot][col]) > BS_R(16.0) * BS_REAL_EPS * size))
+            continue; /* dependent column: its unknown stays 0 */
+        if (pivot != rank)
             for (j = col; j <= rows; ++j) {
-                const bs_real swap = m[col][j];
-                m[col][j] = m[pivot][j];
+                const bs_real swap = m[rank][j];
+                m[rank][j] = m[pivot][j];
                 m[pivot][j] = swap;
             }
-        inverse[col] = BS_R(1.0) / m[col][col]; /* one division per pivot */
-        for (i = col + 1; i < rows; ++i) {
-            const bs_real factor = m[i][col] * inverse[col];
+        inverse[rank] = BS_R(1.0) / m[rank][col]; /* one division per pivot */
+        for (i = rank + 1; i < rows; ++i) {
+            const bs_real factor = m[i][col] * inverse[rank];
             for (j = col; j <= rows; ++j)
-                m[i][j] -= factor * m[col][j];
+                m[i][j] -= factor * m[rank][j];
         }
+        pivot_column[rank++] = col;
     }
-    for (i = rows - 1; i >= 0; --i) {
+    for (j = 0; j < rows; ++j)
+        trial[j] = BS_R(0.0);
+    for (i = rank - 1; i >= 0; --i) {
+        const int c = pivot_column[i];
         bs_real value = m[i][rows];
-        for (j = i + 1; j < rows; ++j)
+        for (j = c + 1; j < rows; ++j)
             value -= m[i][j] * trial[j];
-        trial[i] = value * inverse[i];
+        trial[c] = value * inverse[i];
     }
-    return 0;
 }
 
 /* The mode contact a's trial solution points to (its own mode if it obeys
@@ -319,7 +354,7 @@ static int correct_modes(const bs_contact_set *set, int *mode)
 }
 
 /* Subspace step (see the header comment); keeps the best P seen. */
-static void try_subspace(bs_contact_set *set, const bs_real *step, bs_real *best_residual, bs_real *norm)
+static void try_subspace(bs_contact_set *set, const bs_real *step, bs_real *best_residual)
 {
     const int rows = ROWS * set->count;
     bs_real best[MAX_ROWS];
@@ -333,21 +368,21 @@ static void try_subspace(bs_contact_set *set, const bs_real *step, bs_real *best
     for (j = 0; j < set->count; ++j)
         mode[j] = mode_of(set, j);
     for (count = 0; count < SUBSPACE_TRIES; ++count) {
-        bs_real trial_residual, trial_norm;
+        bs_real trial_residual;
         int seen, earlier;
         for (seen = 0, earlier = 0; earlier < count && !seen; ++earlier)
             for (seen = 1, j = 0; j < set->count; ++j)
                 seen &= tried[earlier][j] == mode[j];
-        if (seen || subspace_solve(set, mode, trial) != 0)
+        if (seen)
             break;
+        subspace_solve(set, mode, trial);
         for (j = 0; j < set->count; ++j)
             tried[count][j] = mode[j];
         for (j = 0; j < rows; ++j)
             set->percussion[j] = trial[j];
-        trial_residual = residual(set, step, &trial_norm);
+        trial_residual = residual(set, step);
         if (trial_residual < *best_residual) {
             *best_residual = trial_residual;
-            *norm = trial_norm;
             for (j = 0; j < rows; ++j)
                 best[j] = trial[j];
         }
@@ -362,20 +397,21 @@ bs_pgs_result bs_pgs_solve(bs_contact_set *set, int max_sweeps, bs_real tol_rel,
 {
     bs_pgs_result result;
     bs_real step[BS_MAX_CONTACTS];
-    bs_real norm = BS_R(0.0);
+    bs_real tolerance;
     bs_real previous = BS_R(0.0);
     int a;
 
     step_sizes(set, step);
+    tolerance = tol_rel * percussion_scale(set, step) + tol_abs;
     result.sweeps = 0;
     for (;;) { /* at least one sweep: the warm start is not trusted unchecked */
         for (a = 0; a < set->count; ++a)
             solve_contact(set, step, a);
         ++result.sweeps;
-        result.residual = residual(set, step, &norm);
-        if (result.residual > tol_rel * norm + tol_abs && set->count > 1)
-            try_subspace(set, step, &result.residual, &norm);
-        result.converged = result.residual <= tol_rel * norm + tol_abs;
+        result.residual = residual(set, step);
+        if (result.residual > tolerance && set->count > 1)
+            try_subspace(set, step, &result.residual);
+        result.converged = result.residual <= tolerance;
         /* stop at the cap, or when a round made no progress: then the
          * residual sits at what the precision can resolve for this G */
         if (result.converged || result.sweeps >= max_sweeps

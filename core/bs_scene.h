@@ -69,4 +69,8 @@ typedef struct bs_scene {
     bs_real pgs_tol_abs;                 /* [N s] */
 } bs_scene;
 
+/* Tells a compile-time scene header (configs/NAME.h) that bs_scene exists,
+ * so that its second inclusion defines bs_compiled_scene. */
+#define BS_SCENE_TYPE_DEFINED 1
+
 #endif

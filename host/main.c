@@ -8,6 +8,7 @@
 static const char usage[] =
     "usage: beamslider COMMAND ...\n"
     "  modes SCENE.ini        modal data: f_k [Hz], gamma_k, phi_k(4/7) per mode\n"
+    "  gen SCENE.ini          C header of the scene for a compile-time (embedded) build\n"
     "  run SCENE.ini [--model free|pcs] [--s0 S] [--t-end T] [--dt DT] [--pgs-iters K]\n"
     "                [--out FILE.csv] [--every N] [--periods FILE.csv]\n"
     "                         simulate; CSV rows every N steps, one row per excitation\n"
@@ -30,6 +31,8 @@ int main(int argc, char **argv)
         return cli_modes(argc - 2, argv + 2);
     if (argc >= 2 && !strcmp(argv[1], "run"))
         return cli_run(argc - 2, argv + 2);
+    if (argc >= 2 && !strcmp(argv[1], "gen"))
+        return cli_gen(argc - 2, argv + 2);
     if (argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
         fputs(usage, stdout);
         return CLI_OK;

@@ -1,0 +1,34 @@
+#!/bin/sh
+# count.sh ELF TARGET [TIMEOUT_S] - run an image like run.sh, counting executed instructions.
+#
+# Output (all on stdout, in execution order): the guest's stdout and stderr, interleaved with
+#     [insn] N         at each call of bs_board_mark(): N = instructions executed since the
+#                      previous mark (since reset for the first one), the mark call excluded
+#     [insn] total N   at the end: instructions of the whole run
+# plus run.sh's messages. A bracket  mark(); code; mark(); printf("label\n");  therefore shows
+# as "[insn] N" directly followed by "label": N is the code's cost plus the harness overhead
+# (2 for an empty bracket; see README.md). Counts are exact and deterministic.
+#
+# Exit status: as run.sh (the guest's status, 99 fault, 124 timeout, 2 usage), or 125 if the
+# plugin cannot be built (build-plugin.sh prints why). Without bs_board_mark in the image only
+# the total is printed. Env: CM_BUILD (where libinsncount.so is; default <repo>/build/cm),
+# CM_NM (default arm-none-eabi-nm), and those of run.sh.
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+[ $# -ge 2 ] && [ $# -le 3 ] || { echo "usage: $0 ELF TARGET [TIMEOUT_S]" >&2; exit 2; }
+elf=$1
+[ -f "$elf" ] || { echo "count.sh: no such image: $elf" >&2; exit 2; }
+CM_BUILD=${CM_BUILD:-$(cd "$here/../.." && pwd)/build/cm}
+export CM_BUILD
+sh "$here/build-plugin.sh" || exit 125
+
+plugin=$CM_BUILD/libinsncount.so
+mark=$("${CM_NM:-arm-none-eabi-nm}" "$elf" | awk '$3 == "bs_board_mark" { print $1; exit }')
+if [ -n "$mark" ]; then
+    plugin=$plugin,mark=0x$mark
+else
+    echo "count.sh: no bs_board_mark in $elf: only the total is counted" >&2
+fi
+# The plugin prints on stderr; merging keeps its lines in order with the guest's output (both
+# are written unbuffered from QEMU's vCPU thread as the guest runs).
+CM_QEMU_ARGS="-plugin $plugin" sh "$here/run.sh" "$elf" "$2" "${3:-60}" 2>&1
