@@ -6,6 +6,7 @@
 #   make bench        steps per second -> docs/performance.md
 #   make fig6-report  the signature move in numbers -> docs/validation.md
 #   make configs      regenerate the compile-time scene headers configs/*.h
+#   make embedded-report  flash, RAM, stack, instructions per step on Cortex-M -> docs/embedded.md
 #   make clean
 #
 # Knobs (make VAR=value):
@@ -45,7 +46,7 @@ TEST_LIBS := -lcmocka -lcjson $(HOST_LIBS)
 BUILD_PACKAGES := gcc make libc6-dev libinih-dev
 TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev libcjson-dev binutils
 
-.PHONY: all run test test-one bench fig6-report configs clean deps-build deps-test
+.PHONY: all run test test-one bench fig6-report configs embedded-test embedded-report clean deps-build deps-test
 .SECONDARY:
 
 # build/beamslider is the binary of the REAL of the last `make`.
@@ -74,6 +75,50 @@ $(OBJ)/tests/%.o: tests/%.c $(wildcard tests/*.h host/*.h core/*.h) | deps-test
 $(OBJ)/tests/test_%: $(OBJ)/tests/test_%.o $(OBJ)/tests/support.o $(HOST_LIB_OBJ) $(CORE_OBJ)
 	$(CC) $(CFLAGS) -o $@ $^ $(TEST_LIBS)
 
+# ---------------------------------------------------------------------------
+# Embedded: the core compiled against one scene (configs/NAME.h) for Cortex-M
+# targets, run under QEMU (port/cortex-m). Each image runs
+# tests/embedded/scene_run.c; the same program built for the host must print
+# the same lines (tests/check_embedded.sh).
+include port/cortex-m/cortex-m.mk
+
+# emb_flags SCENE REAL STEPS EXTRA
+emb_flags = -Icore -Iport/embedded -I. -DBS_REAL_FLOAT=$(if $(filter float,$2),1,0) \
+            -DBS_SCENE_CONFIG='"configs/$1.h"' -DBS_RUN_STEPS=$3 $4
+EMB_SRC := tests/embedded/scene_run.c $(CORE_SRC)
+# TARGET:SCENE:REAL:STEPS run in `make test` (soft-float targets: fewer steps)
+EMB_CHECKS := cortex-m4f:fig6:float:20000 cortex-m4f:fig6_1mode:float:20000 \
+              cortex-m7:fig6:double:20000 cortex-m7:fig6_1mode:float:20000 \
+              cortex-m3:fig6_1mode:float:2000 cortex-m0plus:fig6_1mode:float:2000
+# TARGET:REAL per scene for `make embedded-report`
+EMB_COST_TARGETS := cortex-m4f:float cortex-m7:float cortex-m7:double cortex-m3:float cortex-m0plus:float
+EMB_COST_SCENES := fig6 fig6_1mode fig6_frictionless
+emb_steps = $(if $(filter cortex-m3 cortex-m0plus,$1),2000,20000)
+
+emb_word = $(word $2,$(subst :, ,$1))
+$(foreach c,$(EMB_CHECKS),$(call cm_image,check-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1),\
+    $(EMB_SRC),$(call emb_flags,$(call emb_word,$c,2),$(call emb_word,$c,3),$(call emb_word,$c,4),)))
+$(foreach s,$(EMB_COST_SCENES),$(foreach t,$(EMB_COST_TARGETS),$(call cm_image,cost-$s-$(call emb_word,$t,2),\
+    $(call emb_word,$t,1),$(EMB_SRC),$(call emb_flags,$s,$(call emb_word,$t,2),$(call emb_steps,$(call emb_word,$t,1)),-DBS_RUN_COST=1))))
+
+# The host twin of a check image: build/embhost/check-SCENE-REAL-STEPS
+EMB_HOST := $(BUILD)/embhost
+$(EMB_HOST)/check-%: tests/embedded/scene_run.c tests/embedded/bs_board_host.c $(CORE_SRC) $(wildcard core/*.h configs/*.h)
+	@mkdir -p $(dir $@)
+	$(CC) -O2 $(BASE_CFLAGS:-DBS_REAL_FLOAT%=) -Icore -Iport/host -Iport/cortex-m -I. \
+	    -DBS_REAL_FLOAT=$(if $(filter float,$(word 2,$(subst -, ,$(subst fig6_1mode,fig6x1mode,$*)))),1,0) \
+	    -DBS_SCENE_CONFIG='"configs/$(subst x1mode,_1mode,$(word 1,$(subst -, ,$(subst fig6_1mode,fig6x1mode,$*)))).h"' \
+	    -DBS_RUN_STEPS=$(word 3,$(subst -, ,$*)) -o $@ tests/embedded/scene_run.c tests/embedded/bs_board_host.c $(CORE_SRC) -lm
+
+EMB_CHECK_PAIRS := $(foreach c,$(EMB_CHECKS),$(call emb_word,$c,1):$(call cm_elf,check-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1)):$(EMB_HOST)/check-$(call emb_word,$c,2)-$(call emb_word,$c,3)-$(call emb_word,$c,4))
+
+embedded-test: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_CHECK_PAIRS),$(call emb_word,$p,2) $(call emb_word,$p,3)))
+	$(if $(CM_TOOLS_OK),@sh tests/check_embedded.sh $(EMB_CHECK_PAIRS),@echo "$(CM_TOOLS_MSG)")
+
+EMB_COST_ELFS := $(foreach s,$(EMB_COST_SCENES),$(foreach t,$(EMB_COST_TARGETS),$(call cm_elf,cost-$s-$(call emb_word,$t,2),$(call emb_word,$t,1))))
+embedded-report: $(EMB_COST_ELFS)
+	sh host/embedded_report.sh $(foreach s,$(EMB_COST_SCENES),$(foreach t,$(EMB_COST_TARGETS),$(call emb_word,$t,1):$s:$(call emb_word,$t,2):$(call cm_elf,cost-$s-$(call emb_word,$t,2),$(call emb_word,$t,1))))
+
 run: all
 	$(BUILD)/beamslider run configs/fig6.ini --out $(BUILD)/fig6.csv --every 20
 
@@ -87,6 +132,7 @@ test-one: $(TEST_BIN) $(OBJ)/beamslider
 test: deps-test
 	$(MAKE) --no-print-directory REAL=double test-one
 	$(MAKE) --no-print-directory REAL=float test-one
+	$(MAKE) --no-print-directory embedded-test
 	@echo "make test: all tests passed (double and float)"
 
 # Compile-time scene headers for embedded builds: every scenario file

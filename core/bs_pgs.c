@@ -244,10 +244,10 @@ static int mode_of(const bs_contact_set *set, int a)
  * slot) and its unknown set to 0: the basic solution, instead of one whose
  * huge components cancel in W P and poison the next warm start. Whether the
  * result obeys the contact laws is for the residual to say. */
-static void subspace_solve(const bs_contact_set *set, const int *mode, bs_real *trial)
+static void subspace_solve(bs_contact_set *set, const int *mode, bs_real *trial)
 {
     const int rows = ROWS * set->count;
-    bs_real m[MAX_ROWS][MAX_ROWS + 1]; /* [A | b] */
+    bs_real (*m)[MAX_ROWS + 1] = set->system; /* [A | b]: scratch in the struct, not on the stack */
     bs_real inverse[MAX_ROWS];         /* 1 / pivot of each echelon row */
     int pivot_column[MAX_ROWS];
     int i, j, col, rank = 0;

@@ -33,12 +33,13 @@ void bs_board_mark(void);
  *     p_step(x);
  *     unsigned used = bs_board_stack_used();   // bytes, exact to the byte
  *
- * Call both from the same function, with nothing else in between that uses stack (a printf
- * would be counted). Both use no stack of their own. A result equal to the painted size means
+ * Call both from the same function, with nothing in between that uses stack other than the
+ * code to measure (a printf there would be counted too). Neither adds to the result (they are
+ * written in assembly; 0 for nothing in between). A result equal to the painted size means
  * the region overflowed (raise BS_BOARD_STACK_PAINT_BYTES). Returns 0 if never painted.
- * Limits: a byte written with the pattern value 0xA5 looks unwritten, so the result can be
- * short by up to 3 bytes; memory written by the code as data (not stack) below the stack
- * pointer would be counted. */
+ * Painting 64 KiB takes ~82 000 instructions: keep it out of instruction-count brackets.
+ * Limit: a byte written with the pattern value 0xA5 looks unwritten, so in the rare case
+ * that the deepest bytes written hold 0xA5 the result is short by those bytes. */
 void bs_board_stack_paint(void);
 unsigned bs_board_stack_used(void);
 

@@ -3,7 +3,7 @@
 #
 # Debian's qemu-system-arm accepts -plugin but ships no plugin header, so the header comes from
 # the qemu *source package* of the machine's own Debian release: a private apt configuration
-# (deb-src twins of the system's Debian sources; lists and caches under build/cm/qemu-src/apt,
+# (deb-src twins of the system's Debian sources; lists and caches under build/cm/qemu-src/apt.PID,
 # the system's apt state is not touched) runs `apt-get source --download-only qemu`, and only
 # include/qemu/qemu-plugin.h is extracted to build/cm/qemu-src/qemu-plugin.h. The ~24 MB of
 # downloads are deleted afterwards; nothing of QEMU's source goes into the repository.
@@ -16,20 +16,25 @@ set -u
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 out=${CM_BUILD:-$root/build/cm}
+# Absolute: apt resolves relative Dir:: paths against /etc/apt.
+if ! mkdir -p "$out" || ! out=$(cd "$out" && pwd); then echo "build-plugin: cannot create $out" >&2; exit 1; fi
 src=$here/insn-plugin/insncount.c
 hdir=$out/qemu-src
 hdr=$hdir/qemu-plugin.h
 lib=$out/libinsncount.so
 hostcc=${HOSTCC:-gcc}
 
+apt=
 fail() {
+    [ -z "$apt" ] || rm -rf "$apt"
     echo "build-plugin: $*" >&2
     echo "build-plugin: instruction counting (count.sh) is unavailable; building and running" \
          "images (run.sh) does not need it." >&2
     exit 1
 }
 
-if [ -f "$lib" ] && [ -f "$hdr" ] && [ "$lib" -nt "$src" ] && [ "$lib" -nt "$hdr" ]; then
+newer() { [ -n "$(find "$1" -prune -newer "$2" 2>/dev/null)" ]; }   # POSIX sh has no -nt
+if [ -f "$lib" ] && [ -f "$hdr" ] && newer "$lib" "$src" && newer "$lib" "$hdr"; then
     exit 0
 fi
 
@@ -37,7 +42,7 @@ if [ ! -f "$hdr" ]; then
     command -v apt-get >/dev/null 2>&1 ||
         fail "no apt-get here: put include/qemu/qemu-plugin.h of QEMU $(qemu-system-arm --version 2>/dev/null | sed -n '1s/.*version \([0-9.]*\).*/\1/p') at $hdr"
     command -v xz >/dev/null 2>&1 || fail "xz is missing (apt-get install xz-utils)"
-    apt=$hdir/apt
+    apt=$hdir/apt.$$   # per process, like the .tmp files: parallel runs (make -j) cannot collide
     rm -rf "$apt"
     mkdir -p "$apt/lists/partial" "$apt/cache/archives/partial" "$apt/sources.list.d" "$apt/dl" ||
         fail "cannot create $apt"
@@ -65,11 +70,12 @@ if [ ! -f "$hdr" ]; then
     timeout 600 apt-get "$@" -q=2 update
     (cd "$apt/dl" && timeout 900 apt-get "$@" -q=2 source --download-only qemu) ||
         fail "could not download the qemu source package from the Debian archive (network access? deb-src entries in $apt/sources.list.d?)"
-    orig=$(ls "$apt"/dl/qemu_*.orig.tar.* 2>/dev/null | head -n 1)
-    [ -n "$orig" ] || fail "apt-get source left no qemu_*.orig.tar.* in $apt/dl"
-    tar -xf "$orig" -O --wildcards '*/include/qemu/qemu-plugin.h' > "$hdr.tmp" 2>/dev/null &&
-        [ -s "$hdr.tmp" ] || { rm -f "$hdr.tmp"; fail "no include/qemu/qemu-plugin.h in $orig"; }
-    mv "$hdr.tmp" "$hdr"
+    for orig in "$apt"/dl/qemu_*.orig.tar.*; do break; done
+    [ -f "$orig" ] || fail "apt-get source left no qemu_*.orig.tar.* in $apt/dl"
+    # GNU tar (Debian's): -O extracts to stdout, the compression is detected.
+    tar -xf "$orig" -O --wildcards '*/include/qemu/qemu-plugin.h' > "$hdr.$$" 2>/dev/null
+    if [ ! -s "$hdr.$$" ]; then rm -f "$hdr.$$"; fail "no include/qemu/qemu-plugin.h in $orig"; fi
+    mv "$hdr.$$" "$hdr"
     basename "$orig" > "$hdir/SOURCE"
     rm -rf "$apt"
     # The plugin API is only guaranteed within one QEMU release: warn on a mismatch.
@@ -80,7 +86,7 @@ if [ ! -f "$hdr" ]; then
 fi
 
 command -v "$hostcc" >/dev/null 2>&1 || fail "no host C compiler '$hostcc' (apt-get install gcc)"
-"$hostcc" -std=gnu99 -O2 -Wall -Wextra -Werror -shared -fPIC -I"$hdir" -o "$lib.tmp" "$src" ||
-    { rm -f "$lib.tmp"; fail "compiling $src failed"; }
-mv "$lib.tmp" "$lib"
+"$hostcc" -std=gnu99 -O2 -Wall -Wextra -Werror -shared -fPIC -I"$hdir" -o "$lib.$$" "$src" ||
+    { rm -f "$lib.$$"; fail "compiling $src failed"; }
+mv "$lib.$$" "$lib"
 echo "build-plugin: built $lib"

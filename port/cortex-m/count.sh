@@ -15,12 +15,13 @@
 # CM_NM (default arm-none-eabi-nm), and those of run.sh.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
-[ $# -ge 2 ] && [ $# -le 3 ] || { echo "usage: $0 ELF TARGET [TIMEOUT_S]" >&2; exit 2; }
+if [ $# -lt 2 ] || [ $# -gt 3 ]; then echo "usage: $0 ELF TARGET [TIMEOUT_S]" >&2; exit 2; fi
 elf=$1
 [ -f "$elf" ] || { echo "count.sh: no such image: $elf" >&2; exit 2; }
 CM_BUILD=${CM_BUILD:-$(cd "$here/../.." && pwd)/build/cm}
 export CM_BUILD
-sh "$here/build-plugin.sh" || exit 125
+sh "$here/build-plugin.sh" >&2 || exit 125   # its messages stay out of the counted stream
+CM_BUILD=$(cd "$CM_BUILD" && pwd)
 
 plugin=$CM_BUILD/libinsncount.so
 mark=$("${CM_NM:-arm-none-eabi-nm}" "$elf" | awk '$3 == "bs_board_mark" { print $1; exit }')

@@ -8,7 +8,7 @@
 # -plugin; used by count.sh), CM_MACHINE (another QEMU -M than the target's, e.g. microbit).
 set -u
 usage() { echo "usage: $0 ELF TARGET [TIMEOUT_S]   (TARGET: cortex-m4f cortex-m7 cortex-m3 cortex-m0plus)" >&2; exit 2; }
-[ $# -ge 2 ] && [ $# -le 3 ] || usage
+if [ $# -lt 2 ] || [ $# -gt 3 ]; then usage; fi
 elf=$1
 target=$2
 limit=${3:-60}

@@ -6,7 +6,8 @@
  *     bracket mul_add n=0 / n=1000       (float multiply-add loop through a volatile pointer)
  *     stack empty used=U                 (paint, then measure at once: U must be 0)
  *     stack nest depth=D used=U          (D+1 nested frames of selftest_nest: U = (D+1) * frame)
- *     stack printf used=U                (peak stack of one printf("%f"), for information)
+ *     stack printf value 316.521637      (the printf measured by the next line)
+ *     stack printf used=U                (peak stack of that printf("%f"), for information)
  *     printf 3.141593 -1.500 1e+06       (%f, %.3f, %g formatting)
  *     selftest done
  * BS_SELFTEST_FAULT=1 ends in an undefined instruction (expect exit status 99) and
@@ -86,7 +87,7 @@ int main(void)
     printf("stack nest depth=9 used=%u\n", used);
 
     bs_board_stack_paint();
-    printf("%f\n", (double)selftest_sink_f);
+    printf("stack printf value %f\n", (double)selftest_sink_f);
     used = bs_board_stack_used();
     printf("stack printf used=%u\n", used);
 

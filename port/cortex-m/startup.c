@@ -1,10 +1,10 @@
 /* startup.c - vector table, reset and fault handling for bare-metal images under QEMU.
  *
  * Works with cm.ld and newlib's rdimon (semihosting) C library, linked with -nostartfiles
- * (rdimon's own crt0 would want a different memory layout). Reset: enable the FPU if the image
- * uses one, zero .bss, run the C runtime init tables, open stdin/stdout/stderr over
- * semihosting, then exit(main()): stdio is flushed and main's return value becomes QEMU's exit
- * status.
+ * (this file replaces rdimon's crt0 and the toolchain's crti/crtn). Reset: enable the FPU if
+ * the image uses one, zero .bss, run the C runtime init tables, open stdin/stdout/stderr over
+ * semihosting, then exit(main()): stdio is flushed and main's return value becomes QEMU's
+ * exit status.
  *
  * Every other exception is a fault here (nothing enables interrupts): the handler prints
  * "*** CPU fault: ..." and makes QEMU exit with status 99. It talks to the semihosting host

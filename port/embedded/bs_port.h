@@ -1,0 +1,28 @@
+/* bs_port.h (generic embedded) - the math the core needs on a bare-metal
+ * target: no OS, no stdio, no libc headers.
+ *
+ * sqrt is the one function of every step (once per active slot corner):
+ * __builtin_sqrt(f) becomes the FPU's square-root instruction on targets that
+ * have one (with -fno-math-errno), and the toolchain's correctly rounded
+ * software sqrtf/sqrt elsewhere. sin and cos are only reached for a slider
+ * rotation above 0.05 rad (core/bs_contact.c uses exact polynomials below;
+ * the excitation uses none, core/bs_excitation.c), which the paper's scenes
+ * never see, so the toolchain's libm serves: its cost does not matter and its
+ * accuracy is an ulp or two.
+ */
+#ifndef BS_PORT_H
+#define BS_PORT_H
+
+#include "bs_real.h"
+
+#if BS_REAL_FLOAT
+static inline bs_real bs_sqrt(bs_real x) { return __builtin_sqrtf(x); }
+static inline bs_real bs_sin(bs_real x) { return __builtin_sinf(x); }
+static inline bs_real bs_cos(bs_real x) { return __builtin_cosf(x); }
+#else
+static inline bs_real bs_sqrt(bs_real x) { return __builtin_sqrt(x); }
+static inline bs_real bs_sin(bs_real x) { return __builtin_sin(x); }
+static inline bs_real bs_cos(bs_real x) { return __builtin_cos(x); }
+#endif
+
+#endif
