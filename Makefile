@@ -83,7 +83,7 @@ $(OBJ)/tests/test_%: $(OBJ)/tests/test_%.o $(OBJ)/tests/support.o $(HOST_LIB_OBJ
 include port/cortex-m/cortex-m.mk
 
 # emb_flags SCENE REAL STEPS EXTRA
-emb_flags = -Icore -Iport/embedded -I. -DBS_REAL_FLOAT=$(if $(filter float,$2),1,0) \
+emb_flags = -fno-tree-loop-distribute-patterns -Icore -Iport/embedded -I. -DBS_REAL_FLOAT=$(if $(filter float,$2),1,0) \
             -DBS_SCENE_CONFIG='"configs/$1.h"' -DBS_RUN_STEPS=$3 $4
 EMB_SRC := tests/embedded/scene_run.c $(CORE_SRC)
 # TARGET:SCENE:REAL:STEPS run in `make test` (soft-float targets: fewer steps)

@@ -28,6 +28,14 @@
  * g = x_C - stop_min (left) and g = stop_max - x_C (right), W = (0, +-1, 0, 0).
  *
  * Generalised mass M = diag(1 (modal), m, m, J_C).
+ *
+ * Redundant contacts (two corners of one face sticking, or all four with one
+ * mode) make G singular: the percussions are not unique, and warm starts let
+ * an internal squeeze drift from step to step into numbers whose rounding
+ * wrecks the step. A relative compliance on the diagonal, G_ii (1 + 1e-5),
+ * makes the problem positive definite with a unique, bounded solution, well
+ * conditioned enough for float. It lets a closed contact give way at about
+ * 1e-5 of its free velocity, far below the other errors (docs/design.md 6).
  */
 #include "bs_contact.h"
 #include "bs_port.h"
@@ -207,6 +215,7 @@ void bs_contact_delassus(const bs_scene *scene, bs_contact_set *set)
             set->delassus[i][j] = g;
             set->delassus[j][i] = g;
         }
+        set->delassus[i][i] *= BS_R(1.0) + BS_CONTACT_COMPLIANCE;
     }
 }
 

@@ -5,6 +5,9 @@
 #include "beamslider.h"
 #include "bs_excitation.h"
 
+/* Relative compliance added to the diagonal of G (bs_contact.c). */
+#define BS_CONTACT_COMPLIANCE BS_R(1e-5)
+
 /* Configuration at which contacts are detected (the Moreau midpoint). */
 typedef struct bs_contact_frame {
     const bs_real *q_beam;  /* modal coordinates */

@@ -13,8 +13,10 @@ for pair in "$@"; do
     elf=${rest%%:*}
     host=${rest#*:}
     name=$(basename "$elf" .elf)
-    if ! sh port/cortex-m/run.sh "$elf" "$target" 120 > "$tmp/target.out" 2> "$tmp/target.err"; then
-        echo "FAIL $target $name: exit status $? under QEMU: $(tail -n 2 "$tmp/target.err" | tr '\n' ' ')"
+    sh port/cortex-m/run.sh "$elf" "$target" 120 > "$tmp/target.out" 2> "$tmp/target.err"
+    status=$?
+    if [ "$status" -ne 0 ]; then
+        echo "FAIL $target $name: exit status $status under QEMU: $(tail -n 2 "$tmp/target.err" | tr '\n' ' ')"
         failed=$((failed + 1))
         continue
     fi

@@ -1,0 +1,144 @@
+#!/bin/sh
+# embedded_report.sh TARGET:SCENE:REAL:ELF... - cost of the core on Cortex-M
+# targets under QEMU, written to docs/embedded.md. Run through
+# `make embedded-report` (which builds the images: tests/embedded/scene_run.c
+# with -DBS_RUN_COST=1).
+#
+# Per image:
+#   flash   core code (.text of core/*.o) + constants (.rodata of core/*.o and
+#           the scene's bs_compiled_scene), from the linker map after
+#           --gc-sections, i.e. what the core and its scene add to a firmware
+#   RAM     the bs_sim (the only RAM the core uses besides stack)
+#   stack   the deepest stack a phase of steps used, measured by painting
+#           (includes the few bytes of the calling loop)
+#   instructions per step, counted exactly by QEMU's TCG plugin
+#           (port/cortex-m/count.sh): every step is bracketed by two marks;
+#           the count includes ~10 instructions of harness (the call through
+#           a volatile pointer and the marks), not subtracted. Phase "scene":
+#           the scene from its start (settling, impacts, contact with one or
+#           two corners); phase "tight": the worst case, all four corners and
+#           the clamp stop in contact every step.
+set -eu
+OUT=${OUT:-docs/embedded.md}
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+
+sh port/cortex-m/build-plugin.sh >&2
+
+# core_sizes MAP -> "code rodata scene_rodata sim_bss" in bytes
+core_sizes() {
+    awk '
+        function hex(text,    i, value) { # "0x1a4" -> 420 (mawk has no strtonum)
+            value = 0
+            for (i = 3; i <= length(text); ++i)
+                value = value * 16 + index("0123456789abcdef", tolower(substr(text, i, 1))) - 1
+            return value
+        }
+        function add(name, size, object) {
+            if (object ~ /\/core\// && name ~ /^\.text/) code += size
+            else if (object ~ /\/core\// && name ~ /^\.rodata/) ro += size
+            else if (name == ".rodata.bs_compiled_scene") scene += size
+            else if (name == ".bss.sim") sim += size
+        }
+        /^ \.[A-Za-z_.0-9]+$/ { pending = $1; next }
+        pending != "" && NF == 3 && $1 ~ /^0x/ { add(pending, hex($2), $3); pending = ""; next }
+        /^ \.[A-Za-z_.0-9]+ +0x/ && NF == 4 { add($1, hex($3), $4) }
+        { pending = "" }
+        END { printf "%d %d %d %d\n", code, ro, scene, sim }' "$1"
+}
+
+# step_counts OUTPUT PHASE -> "steps mean worst" from count.sh's output
+step_counts() {
+    awk -v phase="$2" '
+        $0 ~ "^" phase ": end" { inside = 0 }
+        inside && /^\[insn\] [0-9]+$/ { if (++marks % 2 == 0) { n++; sum += $2; if ($2 > worst) worst = $2 } }
+        $0 ~ "^scene " && phase == "scene" { inside = 1 }
+        $0 ~ "^scene: end" && phase == "tight" { inside = 1; marks = 0 }
+        END { if (n) printf "%d %.0f %d\n", n, sum / n, worst; else print "0 0 0" }' "$1"
+}
+
+rows=""
+for spec in "$@"; do
+    target=$(echo "$spec" | cut -d: -f1)
+    scene=$(echo "$spec" | cut -d: -f2)
+    real=$(echo "$spec" | cut -d: -f3)
+    elf=$(echo "$spec" | cut -d: -f4)
+    echo "embedded_report: $target $scene $real" >&2
+    sh port/cortex-m/count.sh "$elf" "$target" 600 > "$TMP/out" || {
+        echo "embedded_report: $elf failed under QEMU:" >&2
+        grep -v '^\[insn\]' "$TMP/out" | tail -n 5 >&2
+        exit 1
+    }
+    set -- $(core_sizes "${elf%.elf}.map")
+    code=$1 ro=$2 scene_bytes=$3 sim_bytes=$4
+    set -- $(step_counts "$TMP/out" scene)
+    steps=$1 mean=$2 worst=$3
+    set -- $(step_counts "$TMP/out" tight)
+    tight_mean=$2 tight_worst=$3
+    stack=$(sed -n 's/^scene: end .* stack \([0-9]*\).*/\1/p' "$TMP/out")
+    tight_stack=$(sed -n 's/^tight: end .* stack \([0-9]*\).*/\1/p' "$TMP/out")
+    contacts=$(sed -n 's/^scene: end .* most-contacts \([0-9]*\).*/\1/p' "$TMP/out")
+    tight_contacts=$(sed -n 's/^tight: end .* most-contacts \([0-9]*\).*/\1/p' "$TMP/out")
+    [ "$stack" -gt "$tight_stack" ] || stack=$tight_stack
+    rows="$rows| $scene | $target | $real | $code | $((ro + scene_bytes)) | $sim_bytes | $stack | $steps | $mean | $worst ($contacts) | $tight_mean | $tight_worst ($tight_contacts) |
+"
+    echo "$target $scene $real $mean $worst $tight_worst" >> "$TMP/summary"
+done
+
+# Real-time margins on the M4F (168 MHz) and M7 (480 MHz) at dt = 2e-5 s:
+# the cycle budget per step over the worst instruction count of any phase.
+margins=$(awk '
+    $1 == "cortex-m4f" || $1 == "cortex-m7" {
+        worst = $5 > $6 ? $5 : $6
+        budget = ($1 == "cortex-m4f" ? 168e6 : 480e6) * 2e-5
+        printf "| %s | %s | %s | %d | %.0f | %.2f |\n", $2, $1, $3, worst, budget, budget / worst
+    }' "$TMP/summary")
+targets=$(awk '
+    $1 == "cortex-m4f" && ($2 == "fig6_1mode" || $2 == "fig6") {
+        worst = $5 > $6 ? $5 : $6
+        limit = $2 == "fig6_1mode" ? 1500 : 6000
+        printf "| %s | %d | %d | %s |\n", $2, worst, limit, worst <= limit ? "yes" : "**no**"
+    }' "$TMP/summary")
+
+commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+cat > "$OUT" <<EOF
+# The core on Cortex-M
+
+Produced by \`make embedded-report\` (host/embedded_report.sh) on $(date -u +%Y-%m-%d), commit $commit,
+with $(arm-none-eabi-gcc --version | head -n 1) (\`-O2\`, \`-std=c99\`, no fused multiply-add) and
+$(qemu-system-arm --version | head -n 1). Each image is tests/embedded/scene_run.c with the core compiled
+against one scene (configs/NAME.h, \`beamslider gen\`) and the generic embedded port
+(port/embedded); see the script's header for what each column measures.
+
+**Instruction counts are not cycles.** QEMU counts executed instructions exactly and
+deterministically but has no timing model: a Cortex-M4 takes 1 cycle for most integer and
+single-precision instructions, 2 for loads, 14 for a division or square root, more for taken
+branches and flash wait states; a Cortex-M7 may issue two per cycle. Cycles per step on silicon
+will be somewhat higher than these counts on the M4F and may be lower on the M7; measure on
+the board (DWT_CYCCNT) before relying on a margin below about 1.5.
+
+| scene | target | real | core code [B] | constants [B] | RAM: bs_sim [B] | stack [B] | steps counted | mean insn/step | worst insn/step (contacts) | tight: mean | tight: worst (contacts) |
+|---|---|---|---|---|---|---|---|---|---|---|---|
+$rows
+"scene": the first steps of the scene from its start ($(awk '{print $1}' "$TMP/summary" | head -n 0)20 000 steps
+on the FPU targets, 2 000 on the M3 and M0+: settling, impacts and contact with one or two
+corners). "tight": a quarter as many steps with every corner and the clamp stop in contact.
+Constants are the core's read-only data and the scene (mode-shape table, modal data); the
+M3 and M0+ have no FPU and compute float in software (libgcc), hence the large counts.
+
+## Targets of the embedded issue (Cortex-M4F, worst case of both phases)
+
+| scene | worst insn/step | target | met |
+|---|---|---|---|
+$targets
+
+## Real-time margin at dt = 2e-5 s
+
+Cycle budget per step (clock x dt) over the worst instruction count; above 1 means the
+step fits in real time *if* one instruction took one cycle (see above).
+
+| scene | board | real | worst insn/step | cycle budget | budget / worst |
+|---|---|---|---|---|---|
+$margins
+EOF
+echo "embedded_report: wrote $OUT" >&2
