@@ -8,16 +8,24 @@
 #   make configs      regenerate the compile-time scene headers configs/*.h
 #   make embedded-report  flash, RAM, stack, instructions per step on Cortex-M -> docs/embedded.md
 #   make clean
+#   make TARGET=cortex-m4f [SCENE=fig6] [REAL=float] [run]
+#                     cross build (and QEMU run) of one compiled scene
 #
 # Knobs (make VAR=value):
 REAL ?= double        # float | double: the core's bs_real
 CC ?= cc
 BUILD ?= build
+TARGET ?= host        # host, or a Cortex-M target: cortex-m4f cortex-m7 cortex-m3 cortex-m0plus
+SCENE ?= fig6         # the compiled scene of a Cortex-M build (configs/SCENE.h)
+STEPS ?= 20000        # steps the Cortex-M build runs
 
 ifeq ($(filter $(strip $(REAL)),float double),)
 $(error REAL must be float or double, not '$(REAL)')
 endif
 REAL := $(strip $(REAL))
+TARGET := $(strip $(TARGET))
+SCENE := $(strip $(SCENE))
+STEPS := $(strip $(STEPS))
 OBJ := $(BUILD)/$(REAL)
 REAL_FLAG := -DBS_REAL_FLOAT=$(if $(filter float,$(REAL)),1,0)
 
@@ -48,10 +56,13 @@ TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev libcjson-dev binutils
 
 .PHONY: all run test test-one bench fig6-report configs embedded-test embedded-report clean deps-build deps-test
 .SECONDARY:
+.DEFAULT_GOAL := all
 
+ifeq ($(TARGET),host)
 # build/beamslider is the binary of the REAL of the last `make`.
 all: $(OBJ)/beamslider
 	@cmp -s $< $(BUILD)/beamslider || cp $< $(BUILD)/beamslider
+endif
 
 $(OBJ)/beamslider: $(HOST_CLI_OBJ) $(HOST_LIB_OBJ) $(CORE_OBJ)
 	$(CC) $(CFLAGS) -o $@ $^ $(HOST_LIBS)
@@ -114,13 +125,28 @@ EMB_CHECK_PAIRS := $(foreach c,$(EMB_CHECKS),$(call emb_word,$c,1):$(call cm_elf
 
 embedded-test: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_CHECK_PAIRS),$(call emb_word,$p,2) $(call emb_word,$p,3)))
 	$(if $(CM_TOOLS_OK),@sh tests/check_embedded.sh $(EMB_CHECK_PAIRS),@echo "$(CM_TOOLS_MSG)")
+	$(if $(CM_TOOLS_OK),@set -e; $(foreach c,$(EMB_CHECKS),NM=arm-none-eabi-nm sh tests/check_core_symbols.sh \
+	    $(call emb_word,$c,3) $(CM_BUILD)/$(call emb_word,$c,1)/check-$(call emb_word,$c,2)-$(call emb_word,$c,3).obj/core/*.o;))
 
 EMB_COST_ELFS := $(foreach s,$(EMB_COST_SCENES),$(foreach t,$(EMB_COST_TARGETS),$(call cm_elf,cost-$s-$(call emb_word,$t,2),$(call emb_word,$t,1))))
 embedded-report: $(EMB_COST_ELFS)
 	sh host/embedded_report.sh $(foreach s,$(EMB_COST_SCENES),$(foreach t,$(EMB_COST_TARGETS),$(call emb_word,$t,1):$s:$(call emb_word,$t,2):$(call cm_elf,cost-$s-$(call emb_word,$t,2),$(call emb_word,$t,1))))
 
+ifeq ($(TARGET),host)
 run: all
 	$(BUILD)/beamslider run configs/fig6.ini --out $(BUILD)/fig6.csv --every 20
+else
+# make TARGET=cortex-m4f [SCENE=fig6] [REAL=float] [STEPS=N] [run]: the firmware
+# tests/embedded/scene_run.c for one target and scene; `run` runs it under QEMU.
+ifeq ($(filter $(TARGET),$(CM_TARGETS)),)
+$(error TARGET must be host or one of: $(CM_TARGETS))
+endif
+$(call cm_image,$(SCENE)-$(REAL)-$(STEPS),$(TARGET),$(EMB_SRC),$(call emb_flags,$(SCENE),$(REAL),$(STEPS),))
+all: $(call cm_elf,$(SCENE)-$(REAL)-$(STEPS),$(TARGET))
+	@arm-none-eabi-size $<
+run: all
+	$(CM_RUN) $(call cm_elf,$(SCENE)-$(REAL)-$(STEPS),$(TARGET)) $(TARGET) 300
+endif
 
 # Every test in this REAL, then the core symbol check.
 test-one: $(TEST_BIN) $(OBJ)/beamslider

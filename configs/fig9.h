@@ -741,7 +741,7 @@ static const bs_scene bs_compiled_scene = {
     .base_displacement = BS_R(9.8843506414871665e-06),
     .phase_step_half = UINT64_C(22873962651399844),
     .dt = BS_R(2.0000000000000002e-05),
-    .pgs_max_sweeps = 4,
+    .pgs_max_sweeps = 2,
     .pgs_tol_rel = BS_R(1.0000000000000001e-05),
     .pgs_tol_abs = BS_R(9.9999999999999995e-08),
 };

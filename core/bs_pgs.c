@@ -59,7 +59,7 @@
 
 #define ROWS BS_ROWS
 #define MAX_ROWS (BS_ROWS * BS_MAX_CONTACTS)
-#define SUBSPACE_TRIES 8 /* mode sets tried per subspace step */
+#define SUBSPACE_TRIES 4 /* mode sets tried per subspace step */
 
 enum { MODE_TAKEOFF, MODE_STICK, MODE_SLIP_POS, MODE_SLIP_NEG }; /* slip +: xi_T > 0, P_T = -mu P_N */
 
@@ -164,21 +164,35 @@ static void solve_contact(bs_contact_set *set, const bs_real *step, int a)
 #endif
 }
 
-static bs_real residual(const bs_contact_set *set, const bs_real *step)
+/* xi = G P + c, every row. */
+static void velocities(const bs_contact_set *set, bs_real *xi)
+{
+    int a;
+    for (a = 0; a < set->count; ++a)
+        velocity(set, a, &xi[ROWS * a]);
+}
+
+/* Natural-map residual of the current P, from its xi. */
+static bs_real residual_of(const bs_contact_set *set, const bs_real *step, const bs_real *xi)
 {
     bs_real sum = BS_R(0.0);
     int a, r;
 
     for (a = 0; a < set->count; ++a) {
         const bs_real *p = &set->percussion[ROWS * a];
-        bs_real xi[ROWS];
         bs_real projected[ROWS];
-        velocity(set, a, xi);
-        prox(set, a, step[a], xi, p, projected);
+        prox(set, a, step[a], &xi[ROWS * a], p, projected);
         for (r = 0; r < ROWS; ++r)
             sum += magnitude(p[r] - projected[r]);
     }
     return sum;
+}
+
+static bs_real residual(const bs_contact_set *set, const bs_real *step)
+{
+    bs_real xi[MAX_ROWS];
+    velocities(set, xi);
+    return residual_of(set, step, xi);
 }
 
 /* r_i = 1 / max(diag G_ii), once per solve. */
@@ -314,12 +328,10 @@ static void subspace_solve(bs_contact_set *set, const int *mode, bs_real *trial)
 /* The mode contact a's trial solution points to (its own mode if it obeys
  * its law). A stick breach is checked first: a nearly singular stick pair
  * gives wild P_T and P_N of either sign, and only the slip row tames P_T. */
-static int corrected_mode(const bs_contact_set *set, int a, int mode)
+static int corrected_mode(const bs_contact_set *set, int a, int mode, const bs_real *xi)
 {
     const bs_real *p = &set->percussion[ROWS * a];
-    bs_real xi[ROWS];
 
-    velocity(set, a, xi);
     if (mode == MODE_TAKEOFF)
         return xi[0] < BS_R(0.0) ? MODE_STICK : MODE_TAKEOFF;
 #if BS_WITH_FRICTION
@@ -340,11 +352,11 @@ static int corrected_mode(const bs_contact_set *set, int a, int mode)
 
 /* Moves the first contact whose trial solution breaks its law (Murty's
  * least-index rule). Returns 1 if a contact moved, 0 if all laws hold. */
-static int correct_modes(const bs_contact_set *set, int *mode)
+static int correct_modes(const bs_contact_set *set, int *mode, const bs_real *xi)
 {
     int a;
     for (a = 0; a < set->count; ++a) {
-        const int next = corrected_mode(set, a, mode[a]);
+        const int next = corrected_mode(set, a, mode[a], &xi[ROWS * a]);
         if (next != mode[a]) {
             mode[a] = next;
             return 1;
@@ -359,6 +371,7 @@ static void try_subspace(bs_contact_set *set, const bs_real *step, bs_real *best
     const int rows = ROWS * set->count;
     bs_real best[MAX_ROWS];
     bs_real trial[MAX_ROWS];
+    bs_real xi[MAX_ROWS];
     int tried[SUBSPACE_TRIES][BS_MAX_CONTACTS];
     int mode[BS_MAX_CONTACTS];
     int count, j;
@@ -380,13 +393,14 @@ static void try_subspace(bs_contact_set *set, const bs_real *step, bs_real *best
             tried[count][j] = mode[j];
         for (j = 0; j < rows; ++j)
             set->percussion[j] = trial[j];
-        trial_residual = residual(set, step);
+        velocities(set, xi);
+        trial_residual = residual_of(set, step, xi);
         if (trial_residual < *best_residual) {
             *best_residual = trial_residual;
             for (j = 0; j < rows; ++j)
                 best[j] = trial[j];
         }
-        if (correct_modes(set, mode) == 0)
+        if (correct_modes(set, mode, xi) == 0)
             break;
     }
     for (j = 0; j < rows; ++j)
