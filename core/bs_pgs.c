@@ -48,10 +48,8 @@
  * internal squeeze that cancels in W P, warm starts let it drift from step to
  * step, and a tolerance relative to |P| then loosens with it until the step
  * diverges. s comes from the data and cannot be inflated that way. The solve
- * stops also
- * when max_sweeps sweeps are done, or when a sweep did not lower e (stalled:
- * e is at the floor the precision reaches for this G, which in float can lie
- * above the tolerance for the nearly singular corner pairs). The residual
+ * also stops when max_sweeps sweeps are done, or when a sweep did not lower e
+ * (stalled: e is at the floor the precision reaches for this G). The residual
  * returned is the one of the P returned, whether converged or not
  * (MODEL.md 9.5: report it, never hide it).
  */
