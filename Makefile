@@ -155,10 +155,16 @@ test-one: $(TEST_BIN) $(OBJ)/beamslider
 	@sh tests/check_cli.sh $(OBJ)/beamslider
 	@sh tests/check_configs.sh $(OBJ)/beamslider
 
+# Fragments of the other tools (figures, reference, robustness) add their own
+# targets and append test targets to TEST_EXTRA.
+TEST_EXTRA :=
+-include host/figures.mk host/reference/reference.mk tests/robustness.mk
+
 test: deps-test
 	$(MAKE) --no-print-directory REAL=double test-one
 	$(MAKE) --no-print-directory REAL=float test-one
 	$(MAKE) --no-print-directory embedded-test
+	$(if $(strip $(TEST_EXTRA)),$(MAKE) --no-print-directory $(TEST_EXTRA))
 	@echo "make test: all tests passed (double and float)"
 
 # Compile-time scene headers for embedded builds: every scenario file

@@ -8,6 +8,7 @@ enum { CLI_OK = 0, CLI_FAILED = 1, CLI_USAGE = 2 };
 
 int cli_modes(int argc, char **argv);
 int cli_gen(int argc, char **argv);
+int cli_sweep(int argc, char **argv);
 int cli_run(int argc, char **argv);
 
 /* Prints "beamslider: error: ..." to stderr. */

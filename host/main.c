@@ -33,6 +33,8 @@ int main(int argc, char **argv)
         return cli_run(argc - 2, argv + 2);
     if (argc >= 2 && !strcmp(argv[1], "gen"))
         return cli_gen(argc - 2, argv + 2);
+    if (argc >= 2 && !strcmp(argv[1], "sweep"))
+        return cli_sweep(argc - 2, argv + 2);
     if (argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
         fputs(usage, stdout);
         return CLI_OK;
