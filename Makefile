@@ -7,6 +7,7 @@
 #   make fig6-report  the signature move in numbers -> docs/validation.md
 #   make configs      regenerate the compile-time scene headers configs/*.h
 #   make embedded-report  flash, RAM, stack, instructions per step on Cortex-M -> docs/embedded.md
+#   make stability    the stiff and extreme cases -> docs/stability.md
 #   make clean
 #   make TARGET=cortex-m4f [SCENE=fig6] [REAL=float] [run]
 #                     cross build (and QEMU run) of one compiled scene
@@ -54,7 +55,7 @@ TEST_LIBS := -lcmocka -lcjson $(HOST_LIBS)
 BUILD_PACKAGES := gcc make libc6-dev libinih-dev
 TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev libcjson-dev binutils
 
-.PHONY: all run test test-one bench fig6-report configs embedded-test embedded-report clean deps-build deps-test
+.PHONY: all run test test-one bench fig6-report configs embedded-test embedded-report stability clean deps-build deps-test
 .SECONDARY:
 .DEFAULT_GOAL := all
 
@@ -179,6 +180,14 @@ fig6-report:
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
 	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
 	sh host/fig6_report.sh
+
+$(OBJ)/bs-stability: host/tools/stability.c $(HOST_LIB_OBJ) $(CORE_OBJ)
+	$(CC) $(CFLAGS) $(HOST_CFLAGS) -o $@ $^ $(HOST_LIBS)
+
+stability:
+	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/bs-stability
+	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/bs-stability
+	sh host/stability_report.sh $(BUILD)/double/bs-stability $(BUILD)/float/bs-stability
 
 bench:
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider

@@ -14,6 +14,7 @@
 #define BS_WITH_ROTATION 1
 #define BS_WITH_STRETCHING 1
 #define BS_WITH_PCS 0
+#define BS_WITH_IMPLICIT 0
 /* the run the scene file describes */
 #define BS_SCENE_MODEL BS_MODEL_FREE
 #define BS_SCENE_START BS_R(0.29999999999999999) /* s0 */
@@ -40,7 +41,6 @@ static const bs_scene bs_compiled_scene = {
         { BS_R(0.0), BS_R(-16790043.695248798), BS_R(0.0), BS_R(175289786.49867859), BS_R(0.0) },
         { BS_R(-7455217.8132376624), BS_R(0.0), BS_R(-23501224.961186063), BS_R(0.0), BS_R(270403492.50401539) },
     },
-    .stretch_norm = BS_R(273741163.49645156),
     .phi_sensor = { BS_R(12.238728040761274), BS_R(-6.103265882501943), BS_R(-8.1179054750997484), BS_R(9.4950688322745727), BS_R(4.0629124040014197) },
 #if BS_REAL_FLOAT
     .shape_pieces = 32,
@@ -741,6 +741,9 @@ static const bs_scene bs_compiled_scene = {
     .base_displacement = BS_R(9.8843506414871665e-06),
     .phase_step_half = UINT64_C(22873962651399844),
     .dt = BS_R(2.0000000000000002e-05),
+    .implicit = 0,
+    .theta = BS_R(0.5),
+    .mode_gain = { BS_R(1.0), BS_R(1.0), BS_R(1.0), BS_R(1.0), BS_R(1.0) },
     .pgs_max_sweeps = 2,
     .pgs_tol_rel = BS_R(1.0000000000000001e-05),
     .pgs_tol_abs = BS_R(9.9999999999999995e-08),

@@ -26,8 +26,9 @@ typedef enum bs_status {
     BS_E_NULL = -1,        /* a required pointer was NULL */
     BS_E_SCENE = -2,       /* a scene field is outside its valid range (bs_scene_check names it) */
     BS_E_ARGUMENT = -3,    /* an argument is outside its range (model, start position) */
-    BS_E_UNSTABLE = -4,    /* explicit limit omega_max dt < 2 violated (at init: linear modes;
-                              during a step: including the cubic stiffening) */
+    BS_E_UNSTABLE = -4,    /* limit omega dt < 2 of the explicitly integrated stiffness violated
+                              (explicit step: the modes, at init and with the cubic stiffening
+                              during a step; implicit step: the cubic stiffening) */
     BS_E_NONFINITE = -5    /* the step produced NaN or infinity */
 } bs_status;
 
@@ -72,7 +73,6 @@ typedef struct bs_sim {
     bs_real slider[3];                 /* x_C, z_C [m], beta [rad] */
     bs_real slider_velocity[3];
     bs_real x_c_low;                   /* compensated-sum remainder of x_C (MODEL.md 9.2) */
-    bs_real omega_sq_max;              /* largest omega_k^2 of the scene */
     bs_real percussion[BS_MAX_CONTACTS][BS_ROWS]; /* last step's percussions, warm start */
     bs_step_report report;
     bs_contact_set contacts;

@@ -4,11 +4,12 @@
 
 #include "bs_scene.h"
 
-/* force[k] = h_k of MODEL.md 5 per unit modal mass at (q, u) for base
- * acceleration base_accel. Returns the stiffness added by the cubic term,
- * an upper bound of the largest eigenvalue of dN/dq [1/s^2], for the
- * explicit stability check. */
-bs_real bs_beam_force(const bs_scene *scene, const bs_real *q, const bs_real *u,
-                      bs_real base_accel, bs_real *force);
+/* force[k] = h_k of MODEL.md 5 per unit modal mass for base acceleration
+ * base_accel: the cubic term at q, the linear stiffness at q_stiff (q itself
+ * for the explicit step; docs/design.md 4), damping at u. Returns an upper
+ * bound [1/s^2] of the largest eigenvalue of the explicitly integrated
+ * stiffness: dN/dq, plus diag(omega_k^2) when linear_explicit. */
+bs_real bs_beam_force(const bs_scene *scene, const bs_real *q, const bs_real *q_stiff, const bs_real *u,
+                      bs_real base_accel, int linear_explicit, bs_real *force);
 
 #endif

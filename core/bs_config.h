@@ -58,6 +58,9 @@
 #ifndef BS_WITH_PCS             /* the pseudo-constrained slider model */
 #define BS_WITH_PCS 1
 #endif
+#ifndef BS_WITH_IMPLICIT        /* the linearly implicit theta variant of the step */
+#define BS_WITH_IMPLICIT 1
+#endif
 
 /* Rows of the contact problem per contact: normal, and tangential with friction. */
 #define BS_ROWS (BS_WITH_FRICTION ? 2 : 1)

@@ -27,15 +27,19 @@
  * Clamp end stops (MODEL.md 9.6): frictionless unilateral contacts on x_C,
  * g = x_C - stop_min (left) and g = stop_max - x_C (right), W = (0, +-1, 0, 0).
  *
- * Generalised mass M = diag(1 (modal), m, m, J_C).
+ * Generalised mass M = diag(1 (modal), m, m, J_C); with the implicit step the
+ * modal entries are the effective masses 1 / mode_gain_k (docs/design.md 4).
  *
  * Redundant contacts (two corners of one face sticking, or all four with one
  * mode) make G singular: the percussions are not unique, and warm starts let
  * an internal squeeze drift from step to step into numbers whose rounding
- * wrecks the step. A relative compliance on the diagonal, G_ii (1 + 1e-5),
- * makes the problem positive definite with a unique, bounded solution, well
- * conditioned enough for float. It lets a closed contact give way at about
- * 1e-5 of its free velocity, far below the other errors (docs/design.md 6).
+ * wrecks the step. A relative compliance on the diagonal, G_ii (1 + eps),
+ * makes the problem positive definite with a unique, bounded solution. It also
+ * lets a closed contact give way at about eps of its free velocity, which
+ * dissipates energy in every contact step; so eps is as small as the
+ * precision allows: 1e-8 in double; in float 3e-7 (normal rows) and 3e-6
+ * (tangential rows, whose near-parallel pairs float cannot resolve below
+ * that; without it the solve stalls above its tolerance).
  */
 #include "bs_contact.h"
 #include "bs_port.h"
@@ -211,11 +215,15 @@ void bs_contact_delassus(const bs_scene *scene, bs_contact_set *set)
             g += scene->inertia_inv * slider_i[2] * slider_j[2];
 #endif
             for (k = 0; k < BS_NMODES(scene); ++k)
+#if BS_WITH_IMPLICIT
+                g += beam_i[k] * scene->mode_gain[k] * beam_j[k];
+#else
                 g += beam_i[k] * beam_j[k];
+#endif
             set->delassus[i][j] = g;
             set->delassus[j][i] = g;
         }
-        set->delassus[i][i] *= BS_R(1.0) + BS_CONTACT_COMPLIANCE;
+        set->delassus[i][i] *= BS_R(1.0) + (i % BS_ROWS ? BS_CONTACT_COMPLIANCE_T : BS_CONTACT_COMPLIANCE);
     }
 }
 
@@ -229,7 +237,11 @@ void bs_contact_apply(const bs_scene *scene, const bs_contact_set *set,
             const bs_real p = set->percussion[BS_ROWS * a + r];
             const bs_real *slider = set->dir_slider[a][r];
             for (k = 0; k < BS_NMODES(scene); ++k)
+#if BS_WITH_IMPLICIT
+                u_beam[k] += scene->mode_gain[k] * set->dir_beam[a][r][k] * p;
+#else
                 u_beam[k] += set->dir_beam[a][r][k] * p;
+#endif
             u_slider[0] += scene->mass_inv * slider[0] * p;
             u_slider[1] += scene->mass_inv * slider[1] * p;
 #if BS_WITH_ROTATION

@@ -5,8 +5,10 @@
 #include "beamslider.h"
 #include "bs_excitation.h"
 
-/* Relative compliance added to the diagonal of G (bs_contact.c). */
-#define BS_CONTACT_COMPLIANCE BS_R(1e-5)
+/* Relative compliance added to the diagonal of G, normal and tangential rows
+ * (bs_contact.c; docs/design.md 6 has the measurements behind the values). */
+#define BS_CONTACT_COMPLIANCE (BS_REAL_FLOAT ? BS_R(3e-7) : BS_R(1e-8))
+#define BS_CONTACT_COMPLIANCE_T (BS_REAL_FLOAT ? BS_R(3e-6) : BS_R(1e-8))
 
 /* Configuration at which contacts are detected (the Moreau midpoint). */
 typedef struct bs_contact_frame {

@@ -46,8 +46,6 @@ static int check_modes(const bs_scene *s, const char **field)
                 if (!is_finite(s->shape_coef[j][i][c]))
                     return fail(field, "shape_coef");
     }
-    if (!is_finite(s->stretch_norm) || !(s->stretch_norm >= BS_R(0.0)))
-        return fail(field, "stretch_norm");
     return 0;
 }
 
@@ -67,9 +65,10 @@ static int check_geometry(const bs_scene *s, const char **field)
     for (i = 0; i < BS_CORNERS; ++i)
         if (!is_finite(s->corner[i][0]) || !is_finite(s->corner[i][1]))
             return fail(field, "corner");
-    /* the slot (P1 above P2, P4 above P3, left of P3/P4) must hold the beam */
-    if (!(s->corner[0][1] - s->corner[1][1] >= BS_R(2.0) * s->half_thickness)
-        || !(s->corner[3][1] - s->corner[2][1] >= BS_R(2.0) * s->half_thickness)
+    /* the slot (P1 above P2, P4 above P3, left of P3/P4) must hold the beam;
+     * R = h (no play) is allowed, to the rounding of the corner coordinates */
+    if (!(s->corner[0][1] - s->corner[1][1] >= BS_R(2.0) * s->half_thickness * (BS_R(1.0) - BS_R(16.0) * BS_REAL_EPS))
+        || !(s->corner[3][1] - s->corner[2][1] >= BS_R(2.0) * s->half_thickness * (BS_R(1.0) - BS_R(16.0) * BS_REAL_EPS))
         || !(s->corner[0][0] < s->corner[3][0]) || !(s->corner[1][0] < s->corner[2][0]))
         return fail(field, "corner");
     if (!is_finite(s->com_offset))
@@ -104,6 +103,17 @@ static int check_numerics(const bs_scene *s, const char **field)
         return fail(field, "phase_step_half");
     if (!is_finite(s->dt) || !(s->dt > BS_R(0.0)))
         return fail(field, "dt");
+    if (s->implicit != 0 && s->implicit != 1)
+        return fail(field, "implicit");
+    if (!(s->theta >= BS_R(0.5) && s->theta <= BS_R(1.0)) || (!s->implicit && s->theta != BS_R(0.5)))
+        return fail(field, "theta");
+    {
+        int k;
+        for (k = 0; k < s->n_modes; ++k)
+            if (!(s->mode_gain[k] > BS_R(0.0) && s->mode_gain[k] <= BS_R(1.0))
+                || (!s->implicit && s->mode_gain[k] != BS_R(1.0)))
+                return fail(field, "mode_gain");
+    }
     if (s->pgs_max_sweeps < 1)
         return fail(field, "pgs_max_sweeps");
     if (!is_finite(s->pgs_tol_rel) || !(s->pgs_tol_rel >= BS_R(0.0)))
@@ -129,8 +139,15 @@ static int check_compiled_features(const bs_scene *s, const char **field)
         return fail(field, "gravity");
     if (!BS_WITH_ROTATION && s->inertia_inv != BS_R(0.0))
         return fail(field, "inertia_inv");
-    if (!BS_WITH_STRETCHING && s->stretch_norm != BS_R(0.0))
-        return fail(field, "stretch_norm");
+    if (!BS_WITH_STRETCHING) {
+        int i, j;
+        for (i = 0; i < s->n_modes; ++i)
+            for (j = 0; j < s->n_modes; ++j)
+                if (s->stretch[i][j] != BS_R(0.0))
+                    return fail(field, "stretch");
+    }
+    if (!BS_WITH_IMPLICIT && s->implicit)
+        return fail(field, "implicit");
     (void)s;
     (void)field;
     return 0;
@@ -147,7 +164,7 @@ bs_status bs_scene_check(const bs_scene *scene, const char **field)
         || check_compiled_features(scene, field))
         return BS_E_SCENE;
     /* explicit stability limit of the smooth part: omega_max dt < 2 */
-    for (i = 0; i < scene->n_modes; ++i)
+    for (i = 0; i < scene->n_modes && !scene->implicit; ++i)
         if (!(scene->omega_sq[i] * scene->dt * scene->dt < BS_R(4.0))) {
             fail(field, "dt");
             return BS_E_UNSTABLE;

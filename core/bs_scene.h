@@ -28,7 +28,6 @@ typedef struct bs_scene {
      * so that N(q) = (q^T S q) S q. Symmetric, positive semidefinite; all zero
      * when the scene leaves the term out. */
     bs_real stretch[BS_MAX_MODES][BS_MAX_MODES];   /* [1/(m sqrt(kg))] */
-    bs_real stretch_norm;                /* largest eigenvalue of S, >= 0 */
     bs_real phi_sensor[BS_MAX_MODES];    /* phi_k(4/7) [1/sqrt(kg)]: w(4L/7) = sum phi_k q_k */
 
     /* Mode shapes on [0, L] as shape_pieces equal polynomial pieces; on piece j
@@ -63,7 +62,14 @@ typedef struct bs_scene {
     uint64_t phase_step_half;            /* f_ex dt / 2 * 2^64, > 0 */
 
     /* Numerics. */
-    bs_real dt;                          /* time step [s], > 0, omega_max dt < 2 */
+    bs_real dt;                          /* time step [s], > 0; explicit: omega_max dt < 2 */
+    /* Integrator of the modal stiffness and damping (docs/design.md 4):
+     * implicit = 0: the explicit midpoint step (theta = 1/2, gains 1);
+     * implicit = 1: theta in [1/2, 1] and mode_gain[k] = 1 / (1 + theta dt 2 D omega_k
+     * + theta^2 dt^2 omega_k^2), the inverse of the modal effective mass. */
+    int implicit;
+    bs_real theta;
+    bs_real mode_gain[BS_MAX_MODES];
     int pgs_max_sweeps;                  /* cap on Gauss-Seidel sweeps per step, >= 1 */
     bs_real pgs_tol_rel;                 /* converged when residual <= tol_rel |P| + tol_abs */
     bs_real pgs_tol_abs;                 /* [N s] */

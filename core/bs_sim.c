@@ -11,6 +11,16 @@
  * The smooth part is explicit (leapfrog): stable while omega_max dt < 2, with
  * omega_max including the cubic stiffening (checked every step).
  *
+ * Linearly implicit variant (scene->implicit; theta in [1/2, 1]): the modal
+ * stiffness K and damping C act on the end-of-step state (Moreau-Jean theta
+ * method); with the cubic term and the excitation F explicit at the midpoint,
+ *   M^ = I + theta dt C + theta^2 dt^2 K  (diagonal: mode_gain = 1 / M^)
+ *   u_free = u_B + M^-1 dt (F - C u_B - K (q_B + theta dt u_B))
+ *   u_E = u_free + M^-1 W P,   q_E = q_B + dt ((1 - theta) u_B + theta u_E)
+ * The linear part is then unconditionally stable (theta = 1/2: trapezoidal,
+ * no numerical damping; theta > 1/2 damps high modes); with M^ = I and
+ * theta = 1/2 it is the explicit step above.
+ *
  * PCS model (MODEL.md 6): the contact kinematics use x_pcs instead of x_C;
  * x_C stays a free coordinate whose drift is the transport velocity. The clamp
  * stops act only in the free model.
@@ -68,12 +78,9 @@ bs_status bs_sim_init(bs_sim *sim, const bs_scene *scene, bs_model model, bs_rea
     sim->x_pcs = s0 * scene->length;
     sim->step = 0;
     sim->phase = 0;
-    sim->omega_sq_max = BS_R(0.0);
     for (i = 0; i < BS_MAX_MODES; ++i) {
         sim->q_beam[i] = BS_R(0.0);
         sim->u_beam[i] = BS_R(0.0);
-        if (i < scene->n_modes && scene->omega_sq[i] > sim->omega_sq_max)
-            sim->omega_sq_max = scene->omega_sq[i];
     }
     /* slot centred on the beam axis, which sits at w0(0) */
     sim->slider[0] = s0 * scene->length;
@@ -158,13 +165,27 @@ bs_status bs_sim_step(bs_sim *sim)
         q_mid[k] = sim->q_beam[k] + half * sim->u_beam[k];
     for (k = 0; k < 3; ++k)
         slider_mid[k] = sim->slider[k] + half * sim->slider_velocity[k];
-    stiffness = sim->omega_sq_max + bs_beam_force(scene, q_mid, sim->u_beam, frame.base.acceleration, force);
+#if BS_WITH_IMPLICIT
+    if (scene->implicit) {
+        /* linear stiffness at q + theta dt u (theta = 1/2: the midpoint); the
+         * explicit remainder is the cubic term alone */
+        bs_real q_stiff[BS_MAX_MODES];
+        for (k = 0; k < n; ++k)
+            q_stiff[k] = sim->q_beam[k] + scene->theta * dt * sim->u_beam[k];
+        stiffness = bs_beam_force(scene, q_mid, q_stiff, sim->u_beam, frame.base.acceleration, 0, force);
+    } else
+#endif
+        stiffness = bs_beam_force(scene, q_mid, q_mid, sim->u_beam, frame.base.acceleration, 1, force);
     if (!(stiffness * dt * dt < BS_R(4.0)))
         return BS_E_UNSTABLE;
 
     /* 2. smooth velocity update */
     for (k = 0; k < n; ++k)
+#if BS_WITH_IMPLICIT
+        u_beam[k] = sim->u_beam[k] + dt * scene->mode_gain[k] * force[k];
+#else
         u_beam[k] = sim->u_beam[k] + dt * force[k];
+#endif
     for (k = 0; k < 3; ++k)
         u_slider[k] = sim->slider_velocity[k];
 #if BS_WITH_GRAVITY
@@ -189,7 +210,12 @@ bs_status bs_sim_step(bs_sim *sim)
     /* 4. end of step; nothing is committed unless every value is finite */
     check = BS_R(0.0);
     for (k = 0; k < n; ++k) {
-        q_mid[k] += half * u_beam[k];
+#if BS_WITH_IMPLICIT
+        if (scene->implicit) /* q_E = q_B + dt ((1 - theta) u_B + theta u_E) */
+            q_mid[k] = sim->q_beam[k] + dt * ((BS_R(1.0) - scene->theta) * sim->u_beam[k] + scene->theta * u_beam[k]);
+        else
+#endif
+            q_mid[k] += half * u_beam[k];
         check += q_mid[k] + u_beam[k];
     }
     x_new = sim->slider[0];
@@ -339,7 +365,7 @@ const char *bs_status_text(bs_status status)
     case BS_E_NULL: return "null pointer";
     case BS_E_SCENE: return "scene field out of range";
     case BS_E_ARGUMENT: return "argument out of range";
-    case BS_E_UNSTABLE: return "explicit stability limit omega_max*dt < 2 violated";
+    case BS_E_UNSTABLE: return "stability limit omega*dt < 2 of the explicitly integrated stiffness violated";
     case BS_E_NONFINITE: return "state became NaN or infinite";
     }
     return "unknown status";

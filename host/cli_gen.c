@@ -7,6 +7,7 @@
  *   friction     mu > 0            restitution  e_N > 0
  *   gravity      g > 0             rotation     [slider] rotation = free
  *   stretching   [numerics] stretching = on      pcs   [run] model = pcs
+ *   implicit     [numerics] integrator = implicit
  * The second, seen once bs_scene is defined (include the header again after
  * beamslider.h), is the scene itself as
  * `static const bs_scene bs_compiled_scene` (const: it stays in flash).
@@ -77,6 +78,7 @@ static void print_switches(const scene_params *p, const scene_data *d, const cha
     printf("#define BS_WITH_ROTATION %d\n", d->inertia_inv > 0.0);
     printf("#define BS_WITH_STRETCHING %d\n", d->stretch_norm > 0.0);
     printf("#define BS_WITH_PCS %d\n", p->model == BS_MODEL_PCS);
+    printf("#define BS_WITH_IMPLICIT %d\n", d->implicit);
     printf("/* the run the scene file describes */\n");
     printf("#define BS_SCENE_MODEL %s\n", p->model == BS_MODEL_PCS ? "BS_MODEL_PCS" : "BS_MODEL_FREE");
     printf("#define BS_SCENE_START ");
@@ -134,9 +136,7 @@ int cli_gen(int argc, char **argv)
         print_list(d->stretch[i], d->n_modes);
         printf(",\n");
     }
-    printf("    },\n    .stretch_norm = ");
-    print_real(d->stretch_norm);
-    printf(",\n");
+    printf("    },\n");
     print_reals("phi_sensor", d->phi_sensor, d->n_modes);
     printf("#if BS_REAL_FLOAT\n");
     print_shape(&fits[1], d->n_modes, d->length);
@@ -167,6 +167,11 @@ int cli_gen(int argc, char **argv)
     printf(",\n    .base_displacement = "); print_real(d->base_displacement);
     printf(",\n    .phase_step_half = UINT64_C(%llu),\n", (unsigned long long)d->phase_step_half);
     printf("    .dt = "); print_real(d->dt);
+    printf(",\n    .implicit = %d,\n    .theta = ", d->implicit);
+    print_real(d->theta);
+    printf(",\n");
+    printf("    .mode_gain = ");
+    print_list(d->mode_gain, d->n_modes);
     printf(",\n    .pgs_max_sweeps = %d,\n    .pgs_tol_rel = ", d->pgs_max_sweeps);
     print_real(d->pgs_tol_rel);
     printf(",\n    .pgs_tol_abs = "); print_real(d->pgs_tol_abs);

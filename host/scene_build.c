@@ -112,11 +112,18 @@ static void compute_slider(const scene_params *p, scene_data *d)
 static void compute_numerics(const scene_params *p, scene_data *d)
 {
     const double omega = 2.0 * 3.14159265358979323846 * p->frequency;
+    int k;
     d->base_accel = p->acceleration;
     d->base_velocity = p->acceleration / omega;
     d->base_displacement = p->acceleration / (omega * omega);
     d->phase_step_half = (uint64_t)llround(ldexp(0.5 * p->frequency * p->dt, 64));
     d->dt = p->dt;
+    d->implicit = p->implicit;
+    d->theta = p->implicit ? p->theta : 0.5;
+    for (k = 0; k < d->n_modes; ++k) /* 1 / (1 + theta dt 2 D omega + theta^2 dt^2 omega^2) */
+        d->mode_gain[k] = p->implicit ? 1.0 / (1.0 + d->theta * p->dt * d->damping[k]
+                                               + d->theta * d->theta * p->dt * p->dt * d->omega_sq[k])
+                                      : 1.0;
     d->pgs_max_sweeps = p->pgs_max_sweeps;
     d->pgs_tol_rel = p->pgs_tol_rel;
     d->pgs_tol_abs = p->pgs_tol_abs;
@@ -136,7 +143,6 @@ static void to_core(const scene_data *d, const shape_fit *fit, bs_scene *scene)
         for (j = 0; j < d->n_modes; ++j)
             scene->stretch[i][j] = (bs_real)d->stretch[i][j];
     }
-    scene->stretch_norm = (bs_real)d->stretch_norm;
     scene->shape_pieces = fit->pieces;
     scene->shape_scale = (bs_real)(fit->pieces / d->length);
     for (j = 0; j < fit->pieces; ++j)
@@ -163,6 +169,10 @@ static void to_core(const scene_data *d, const shape_fit *fit, bs_scene *scene)
     scene->base_displacement = (bs_real)d->base_displacement;
     scene->phase_step_half = d->phase_step_half;
     scene->dt = (bs_real)d->dt;
+    scene->implicit = d->implicit;
+    scene->theta = (bs_real)d->theta;
+    for (i = 0; i < d->n_modes; ++i)
+        scene->mode_gain[i] = (bs_real)d->mode_gain[i];
     scene->pgs_max_sweeps = d->pgs_max_sweeps;
     scene->pgs_tol_rel = (bs_real)d->pgs_tol_rel;
     scene->pgs_tol_abs = (bs_real)d->pgs_tol_abs;
@@ -182,10 +192,10 @@ static int check_derived(const scene_file *file, const scene_model *model, char 
                  p->beam.length, scene_where(file, "beam", "length", where2, sizeof where2));
         return -1;
     }
-    if (!(omega_max * p->dt < 2.0)) {
+    if (!p->implicit && !(omega_max * p->dt < 2.0)) {
         snprintf(err, size,
                  "%s: [numerics] dt = %g s: omega_max dt = %.4g, above the explicit limit 2 "
-                 "(mode %d, %.1f Hz); allowed: dt < %.4g s",
+                 "(mode %d, %.1f Hz); allowed: dt < %.4g s, or [numerics] integrator = implicit",
                  scene_where(file, "numerics", "dt", where, sizeof where), p->dt, omega_max * p->dt,
                  model->modes.n, omega_max / (2.0 * 3.14159265358979323846), 2.0 / omega_max);
         return -1;

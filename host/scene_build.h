@@ -19,6 +19,8 @@ typedef struct scene_data {
     double base_accel, base_velocity, base_displacement;
     uint64_t phase_step_half;
     double dt;
+    int implicit;
+    double theta, mode_gain[BS_MAX_MODES];
     int pgs_max_sweeps;
     double pgs_tol_rel, pgs_tol_abs;
 } scene_data;

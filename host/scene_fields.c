@@ -12,6 +12,8 @@
     { section, key, FIELD_INT, offsetof(scene_params, member), low, high, 0, 0, unit, meaning, 0, 0 }
 #define CHOICE(section, key, member, choices, default_text, meaning) \
     { section, key, FIELD_CHOICE, offsetof(scene_params, member), 0, 0, 0, 0, "", meaning, choices, default_text }
+#define REAL_OPTIONAL(section, key, member, low, high, default_text, unit, meaning) \
+    { section, key, FIELD_REAL, offsetof(scene_params, member), low, high, 0, 0, unit, meaning, 0, default_text }
 #define TEXT(section, key, member, meaning) \
     { section, key, FIELD_TEXT, offsetof(scene_params, member), 0, 0, 0, 0, "", meaning, 0, "" }
 
@@ -19,6 +21,7 @@
 static const char *const models[] = { "free", "pcs", 0 };           /* = bs_model */
 static const char *const rotations[] = { "locked", "free", 0 };     /* rotation = 1: free */
 static const char *const switches[] = { "off", "on", 0 };
+static const char *const integrators[] = { "explicit", "implicit", 0 };
 
 const field_spec scene_fields[] = {
     TEXT("scene", "name", name, "scene name"),
@@ -46,6 +49,9 @@ const field_spec scene_fields[] = {
     INT("numerics", "modes", modes, 1, BS_MAX_MODES, "", "number of beam modes N"),
     CHOICE("numerics", "stretching", stretching, switches, "on", "on | off: the cubic bending-stretching term"),
     REAL("numerics", "dt", dt, 0, INFINITY, 1, 1, "s", "time step (explicit limit: omega_max dt < 2)"),
+    CHOICE("numerics", "integrator", implicit, integrators, "explicit",
+           "explicit (midpoint) | implicit (modal stiffness and damping, theta method)"),
+    REAL_OPTIONAL("numerics", "theta", theta, 0.5, 1.0, "0.5", "", "theta of the implicit step"),
     INT("numerics", "pgs_max_sweeps", pgs_max_sweeps, 1, 1000000000, "", "cap on contact-solve sweeps per step"),
     REAL("numerics", "pgs_tol_rel", pgs_tol_rel, 0, INFINITY, 0, 1, "", "relative tolerance of the contact solve"),
     REAL("numerics", "pgs_tol_abs", pgs_tol_abs, 0, INFINITY, 0, 1, "N s", "absolute tolerance of the contact solve"),

@@ -26,6 +26,8 @@ typedef struct scene_params {
     double frequency;               /* f_ex [Hz] */
     double acceleration;            /* a [m/s^2] */
     int modes;                      /* N */
+    int implicit;                   /* 0: explicit midpoint step, 1: linearly implicit theta step */
+    double theta;                   /* implicit step's theta, [1/2, 1] */
     int stretching;                 /* 1: cubic bending-stretching term, 0: left out */
     double dt;                      /* [s] */
     int pgs_max_sweeps;
