@@ -116,10 +116,93 @@ static void test_free_modes_follow_the_discrete_map_and_the_continuous_law(void 
     }
 }
 
+/* The linearly implicit step, one mode, no contact: with
+ * g = 1 / (1 + theta h c + theta^2 h^2 w^2), c = 2 D w,
+ *   u' = u + g h (-c u - w^2 (q + theta h u)),   q' = q + h ((1 - theta) u + theta u'). */
+static void implicit_map(double w, double d, double h, double theta, double *omega, double *decay)
+{
+    const double c = 2.0 * d * w;
+    const double g = 1.0 / (1.0 + theta * h * c + theta * theta * h * h * w * w);
+    const double a21 = -g * h * w * w, a22 = 1.0 - g * h * c - g * theta * h * h * w * w;
+    const double a11 = 1.0 + h * theta * a21, a12 = h * (1.0 - theta) + h * theta * a22;
+    const double trace = a11 + a22, det = a11 * a22 - a12 * a21;
+    const double complex lambda = 0.5 * trace + 0.5 * csqrt(trace * trace - 4 * det);
+    *omega = carg(lambda) / h;
+    *decay = -log(cabs(lambda)) / h;
+}
+
+static void test_implicit_modes_follow_their_discrete_map(void **state)
+{
+    static const double thetas[] = { 0.5, 0.75 };
+    unsigned t;
+    int k;
+    (void)state;
+    for (t = 0; t < 2; ++t) {
+        const double h = 2e-6;
+        support_load("configs/fig6.ini", &file, &scene, &model);
+        file.params.acceleration = 0.0;
+        file.params.gravity = 0.0;
+        file.params.play_ratio = 2.0;
+        file.params.dt = h;
+        file.params.implicit = 1;
+        file.params.theta = thetas[t];
+        support_build(&file, &scene, &model);
+        for (k = 0; k < 5; k += 2) {
+            const double w = sqrt((double)scene.omega_sq[k]);
+            double omega_map, decay_map;
+            const measured m = simulate_mode(k, h);
+            implicit_map(w, file.params.damping_ratio, h, thetas[t], &omega_map, &decay_map);
+            print_message("implicit theta %.2f mode %d, %s: omega %.6f (map %.6f), decay %.5f (map %.5f)\n",
+                          thetas[t], k + 1, BS_REAL_NAME, m.omega, omega_map, m.decay, decay_map);
+            assert_close("implicit omega vs its map", m.omega, omega_map, 0.0, BS_REAL_FLOAT ? 1e-5 : 1e-7);
+            assert_close("implicit decay vs its map", m.decay, decay_map, 0.0, BS_REAL_FLOAT ? 2e-2 : 1e-4);
+            /* trapezoidal frequency error: w h / 2 = tan(w_h h / 2), (w h)^2 / 12 relative */
+            assert_close("implicit omega vs omega_k", omega_map, w, 0.0, (w * h) * (w * h) / 6.0 + 2.0 * thetas[t] * w * h);
+        }
+    }
+}
+
+/* Where the explicit step is refused (omega_5 dt = 4), the implicit one runs
+ * a free vibration of all five modes without growth. */
+static void test_implicit_step_is_stable_beyond_the_explicit_limit(void **state)
+{
+    const double h = 4.0 / (2.0 * 3.14159265358979323846 * 3500.1239);
+    bs_real q[BS_MAX_MODES] = { 0 };
+    double largest = 0.0, first = 0.0;
+    int k, n;
+    (void)state;
+    support_load("configs/fig6.ini", &file, &scene, &model);
+    file.params.acceleration = 0.0;
+    file.params.gravity = 0.0;
+    file.params.play_ratio = 2.0;
+    file.params.dt = h;
+    file.params.damping_ratio = 0.0;
+    file.params.implicit = 1;
+    support_build(&file, &scene, &model);
+    for (k = 0; k < 5; ++k)
+        q[k] = (bs_real)1e-9;
+    assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_FREE, BS_R(0.5)), BS_OK);
+    assert_int_equal(bs_sim_set_state(&sim, q, NULL, NULL, NULL), BS_OK);
+    for (n = 0; n < 20000; ++n) {
+        bs_real u[BS_MAX_MODES];
+        double energy = 0.0;
+        assert_int_equal(bs_sim_step(&sim), BS_OK);
+        bs_sim_get_state(&sim, q, u, NULL, NULL);
+        for (k = 0; k < 5; ++k) /* the trapezoidal rule keeps this quadratic form for D = 0 */
+            energy += (double)u[k] * (double)u[k] + (double)scene.omega_sq[k] * (double)q[k] * (double)q[k];
+        if (n == 0)
+            first = energy;
+        largest = fmax(largest, energy);
+    }
+    assert_close("largest energy / first", largest / first, 1.0, 0.0, BS_REAL_FLOAT ? 1e-3 : 1e-6);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_free_modes_follow_the_discrete_map_and_the_continuous_law),
+        cmocka_unit_test(test_implicit_modes_follow_their_discrete_map),
+        cmocka_unit_test(test_implicit_step_is_stable_beyond_the_explicit_limit),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
