@@ -8,6 +8,8 @@
 #   make configs      regenerate the compile-time scene headers configs/*.h
 #   make embedded-report  flash, RAM, stack, instructions per step on Cortex-M -> docs/embedded.md
 #   make stability    the stiff and extreme cases -> docs/stability.md
+#   make accuracy     error against run time vs the reference -> docs/accuracy.md
+#   make figures      the papers' figures and validation tables -> docs/figures, docs/validation.md
 #   make clean
 #   make TARGET=cortex-m4f [SCENE=fig6] [REAL=float] [run]
 #                     cross build (and QEMU run) of one compiled scene
@@ -55,7 +57,7 @@ TEST_LIBS := -lcmocka -lcjson $(HOST_LIBS)
 BUILD_PACKAGES := gcc make libc6-dev libinih-dev
 TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev libcjson-dev binutils
 
-.PHONY: all run test test-one bench fig6-report configs embedded-test embedded-report stability clean deps-build deps-test
+.PHONY: all run test test-one bench fig6-report configs embedded-test embedded-report stability accuracy accuracy-check clean deps-build deps-test
 .SECONDARY:
 .DEFAULT_GOAL := all
 
@@ -158,7 +160,7 @@ test-one: $(TEST_BIN) $(OBJ)/beamslider
 
 # Fragments of the other tools (figures, reference, robustness) add their own
 # targets and append test targets to TEST_EXTRA.
-TEST_EXTRA :=
+TEST_EXTRA := accuracy-check
 -include host/figures.mk host/reference/reference.mk tests/robustness.mk
 
 test: deps-test
@@ -181,7 +183,17 @@ fig6-report:
 	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
 	sh host/fig6_report.sh
 
-$(OBJ)/bs-stability: host/tools/stability.c $(HOST_LIB_OBJ) $(CORE_OBJ)
+$(OBJ)/bs-accuracy: $(BUILD)/bs-reference
+	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
+	sh host/accuracy.sh
+
+accuracy-check: $(BUILD)/bs-reference
+	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
+	@sh tests/check_accuracy.sh $(BUILD)/bs-reference
+
+stability: host/tools/stability.c $(HOST_LIB_OBJ) $(CORE_OBJ)
 	$(CC) $(CFLAGS) $(HOST_CFLAGS) -o $@ $^ $(HOST_LIBS)
 
 stability:
