@@ -183,7 +183,10 @@ fig6-report:
 	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
 	sh host/fig6_report.sh
 
-$(OBJ)/bs-accuracy: $(BUILD)/bs-reference
+$(OBJ)/bs-stability: host/tools/stability.c $(HOST_LIB_OBJ) $(CORE_OBJ)
+	$(CC) $(CFLAGS) $(HOST_CFLAGS) -o $@ $^ $(HOST_LIBS)
+
+accuracy: $(BUILD)/bs-reference
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
 	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
 	sh host/accuracy.sh
@@ -192,9 +195,6 @@ accuracy-check: $(BUILD)/bs-reference
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
 	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
 	@sh tests/check_accuracy.sh $(BUILD)/bs-reference
-
-stability: host/tools/stability.c $(HOST_LIB_OBJ) $(CORE_OBJ)
-	$(CC) $(CFLAGS) $(HOST_CFLAGS) -o $@ $^ $(HOST_LIBS)
 
 stability:
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/bs-stability
