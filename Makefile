@@ -38,8 +38,11 @@ WARNINGS := -Wall -Wextra -Werror -Wdouble-promotion -Wfloat-conversion -Wundef 
             -Wstrict-prototypes -Wvla
 CFLAGS ?= -O2 -g
 BASE_CFLAGS := -std=c99 -ffp-contract=off -fno-math-errno $(WARNINGS) $(REAL_FLAG)
-# Core: no libc calls; keep GCC from turning loops into memset/memcpy calls.
-CORE_CFLAGS := $(BASE_CFLAGS) -fno-tree-loop-distribute-patterns -Icore -Iport/host
+# Core: no libc calls; keep GCC from turning loops into memset/memcpy calls
+# (a GCC flag: other compilers go without; check_core_symbols.sh still checks).
+NO_LOOP_CALLS := $(shell $(CC) -fno-tree-loop-distribute-patterns -Werror -E -x c /dev/null >/dev/null 2>&1 \
+                   && echo -fno-tree-loop-distribute-patterns)
+CORE_CFLAGS := $(BASE_CFLAGS) $(NO_LOOP_CALLS) -Icore -Iport/host
 HOST_CFLAGS := $(BASE_CFLAGS) -Icore -Iport -Iport/host -Ihost
 
 CORE_SRC := $(wildcard core/*.c)

@@ -98,6 +98,10 @@ static int check_numerics(const bs_scene *s, const char **field)
     if (!is_finite(s->base_accel) || !is_finite(s->base_velocity)
         || !is_finite(s->base_displacement))
         return fail(field, "base_accel/base_velocity/base_displacement");
+    /* bs_sim_init starts the slider at z_C = base_displacement - com_offset:
+     * each finite is not enough, their sum must be too */
+    if (!is_finite(s->base_displacement - s->com_offset))
+        return fail(field, "com_offset/base_displacement");
     /* at least two steps per excitation period: f_ex dt < 1/2 */
     if (s->phase_step_half == 0 || s->phase_step_half >= ((uint64_t)1 << 62))
         return fail(field, "phase_step_half");

@@ -75,6 +75,10 @@ static int parse_options(int argc, char **argv, run_cli *cli, scene_file *file)
             return -1;
         }
     }
+    if (cli->out_path && cli->periods_path && !strcmp(cli->out_path, cli->periods_path)) {
+        cli_error("--out and --periods both name %s: each needs its own file", cli->out_path);
+        return -1;
+    }
     return 0;
 }
 

@@ -75,7 +75,7 @@ static int parse_options(int argc, char **argv, sweep_cli *cli, sweep_options *o
     cli->scene_path = argv[0];
     cli->out_path = cli->trace_path = NULL;
     cli->dir = -1;
-    cli->trace_at = NAN;
+    cli->trace_at = (double)NAN;
     options->from = 0.0;
     options->to = 0.5;
     options->step = 0.005;

@@ -1,4 +1,5 @@
 /* main.c - beamslider: command dispatch. */
+#include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -28,19 +29,32 @@ void cli_error(const char *format, ...)
     fputc('\n', stderr);
 }
 
+/* Standard output carries what a command produces (the JSON summary, the
+ * modal table, the generated header): if writing it failed (> /dev/full, a
+ * full disk), say so and do not exit 0. */
+static int finish(int status)
+{
+    errno = 0;
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        cli_error("writing standard output failed: %s", errno ? strerror(errno) : "write error");
+        return status == CLI_USAGE ? CLI_USAGE : CLI_FAILED;
+    }
+    return status;
+}
+
 int main(int argc, char **argv)
 {
     if (argc >= 2 && !strcmp(argv[1], "modes"))
-        return cli_modes(argc - 2, argv + 2);
+        return finish(cli_modes(argc - 2, argv + 2));
     if (argc >= 2 && !strcmp(argv[1], "run"))
-        return cli_run(argc - 2, argv + 2);
+        return finish(cli_run(argc - 2, argv + 2));
     if (argc >= 2 && !strcmp(argv[1], "gen"))
-        return cli_gen(argc - 2, argv + 2);
+        return finish(cli_gen(argc - 2, argv + 2));
     if (argc >= 2 && !strcmp(argv[1], "sweep"))
-        return cli_sweep(argc - 2, argv + 2);
+        return finish(cli_sweep(argc - 2, argv + 2));
     if (argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
         fputs(usage, stdout);
-        return CLI_OK;
+        return finish(CLI_OK);
     }
     if (argc >= 2)
         cli_error("unknown command '%s'", argv[1]);

@@ -52,7 +52,7 @@ int run_scene(const bs_scene *scene, const run_options *options, run_result *res
     result->write_errno = 0;
     result->steps = 0;
     result->t = 0.0;
-    result->s_final = result->s_min = (double)bs_sim_position(&sim);
+    result->s_final = result->s_min = options->s0; /* the sim is only readable once init succeeded */
     result->t_s_min = 0.0;
     result->amp_final_h = 0.0;
     result->amp_periods = 0;
@@ -62,6 +62,7 @@ int run_scene(const bs_scene *scene, const run_options *options, run_result *res
     result->hash = 0;
     if (result->status != BS_OK)
         return -1;
+    result->s_final = result->s_min = (double)bs_sim_position(&sim);
     bs_monitor_init(&monitor, &sim);
     if (options->csv && (fputs(run_csv_header, options->csv) < 0 || write_row(options->csv, 0.0, &sim)))
         fail_write(result);

@@ -207,16 +207,63 @@ static int check_derived(const scene_file *file, const scene_model *model, char 
                  0.5 / p->frequency);
         return -1;
     }
-    if (p->model == BS_MODEL_FREE) {
-        const double low = 0.5 * p->slot_width / p->beam.length;
-        if (!(p->s0 >= low && p->s0 <= 1.0 - low)) {
-            snprintf(err, size, "%s: [run] s0 = %g: the slider would start inside a clamp; "
-                     "allowed: [%.6g, %.6g] (slot corners between the clamps)",
-                     scene_where(file, "run", "s0", where, sizeof where), p->s0, low, 1.0 - low);
-            return -1;
-        }
+    /* steps are counted exactly in a double: t = n dt */
+    if (!(p->t_end / p->dt <= 9007199254740992.0)) {
+        snprintf(err, size, "%s: [run] t_end = %g s is more than 2^53 steps of dt = %g s",
+                 scene_where(file, "run", "t_end", where, sizeof where), p->t_end, p->dt);
+        return -1;
     }
     return 0;
+}
+
+/* The start position, checked as the core checks it: in bs_real, against the
+ * rounded stops (in double the edge of the range can come out the other way). */
+static int check_start(const scene_file *file, const bs_scene *scene, char *err, size_t size)
+{
+    const scene_params *p = &file->params;
+    const bs_real x0 = (bs_real)p->s0 * scene->length;
+    char where[SCENE_PATH + 16];
+
+    if (p->model == BS_MODEL_FREE && !(x0 >= scene->stop_min && x0 <= scene->stop_max)) {
+        snprintf(err, size, "%s: [run] s0 = %.17g: the slider would start inside a clamp; "
+                 "allowed: [%.6g, %.6g] (slot corners between the clamps)",
+                 scene_where(file, "run", "s0", where, sizeof where), p->s0,
+                 (double)(scene->stop_min / scene->length), (double)(scene->stop_max / scene->length));
+        return -1;
+    }
+    return 0;
+}
+
+/* The INI fields a core scene field is computed from, to point at them when
+ * the core refuses a value the host's own checks let through (a product that
+ * overflows bs_real, say). */
+static const struct {
+    const char *core_field;
+    const char *inputs;
+} origins[] = {
+    { "length", "[beam] length" },
+    { "stop_min/stop_max", "[beam] length, [slider] slot_width" },
+    { "half_thickness", "[beam] thickness" },
+    { "corner", "[beam] thickness, [slider] slot_width, play_ratio, com_offset" },
+    { "com_offset", "[slider] com_offset" },
+    { "com_offset/base_displacement", "[slider] com_offset, [excitation] acceleration, frequency" },
+    { "base_accel/base_velocity/base_displacement", "[excitation] acceleration, frequency" },
+    { "phase_step_half", "[excitation] frequency, [numerics] dt" },
+    { "dt", "[numerics] dt" },
+    { "mass_inv", "[slider] mass" },
+    { "inertia_inv", "[slider] mass, inertia, com_offset" },
+    { "gravity", "[environment] gravity, tilt" },
+    { "mu", "[contact] friction" },
+    { "theta", "[numerics] theta" },
+    { NULL, "[beam] and [clamps] (the modal data)" },
+};
+
+static const char *core_field_inputs(const char *field)
+{
+    int i;
+    for (i = 0; origins[i].core_field && strcmp(origins[i].core_field, field); ++i)
+        ;
+    return origins[i].inputs;
 }
 
 int scene_build(const scene_file *file, bs_scene *scene, scene_model *model, char *err, size_t size)
@@ -246,12 +293,13 @@ int scene_build(const scene_file *file, bs_scene *scene, scene_model *model, cha
     compute_numerics(p, &model->data);
     to_core(&model->data, &model->fit, scene);
     status = bs_scene_check(scene, &field);
-    if (status != BS_OK) { /* the host checks above should make this unreachable */
-        snprintf(err, size, "%s: core refused the scene: %s (field %s)", file->files[0],
-                 bs_status_text(status), field);
+    if (status != BS_OK) {
+        snprintf(err, size, "%s: the core refuses the scene: %s (field %s, from %s): the values are "
+                 "too extreme for %s", file->files[0], bs_status_text(status), field,
+                 core_field_inputs(field), BS_REAL_FLOAT ? "float" : "double");
         return -1;
     }
-    return 0;
+    return check_start(file, scene, err, size);
 }
 
 int scene_read(const char *path, scene_file *file, bs_scene *scene, scene_model *model, char *err,

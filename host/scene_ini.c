@@ -2,11 +2,13 @@
  *
  * libinih (Debian's libinih-dev) does the INI syntax. Its handler gets no line
  * number in the Debian build, so the file is fed through a reader that counts
- * lines (and refuses over-long lines instead of letting them be split). The
- * first error wins and names file, line, field, value and the allowed range.
+ * lines (and refuses over-long lines instead of letting them be split, and NUL
+ * bytes, which would cut a line short unseen). The first error wins and names
+ * file, line, field, value and the allowed range.
  */
 #include "scene_ini.h"
 
+#include <errno.h>
 #include <ini.h>
 #include <math.h>
 #include <stdio.h>
@@ -16,7 +18,9 @@
 typedef struct reader {
     FILE *file;
     int line;
-    int too_long;     /* line number of the first over-long line, 0 if none */
+    int bad_line;     /* line number of the first over-long line or NUL byte, 0 if none */
+    int bad_is_nul;   /* 1: bad_line holds a NUL byte; 0: it is over-long */
+    int read_errno;   /* errno of a failed read (e.g. the path is a folder), 0 if none */
 } reader;
 
 typedef struct parse {
@@ -31,19 +35,38 @@ typedef struct parse {
     int failed;
 } parse;
 
+/* fgets for libinih, by characters: fgets cannot tell a NUL byte (a binary
+ * or UTF-16 file) from the end of the line. */
 static char *read_line(char *str, int num, void *stream)
 {
     reader *in = (reader *)stream;
-    char *line = fgets(str, num, in->file);
-    size_t length;
+    int length = 0;
+    int c = 0;
 
-    if (!line)
+    errno = 0;
+    while (length < num - 1 && (c = getc(in->file)) != EOF) {
+        if (c == '\0' && !in->bad_line) {
+            in->bad_line = in->line + 1;
+            in->bad_is_nul = 1;
+        }
+        str[length++] = (char)c;
+        if (c == '\n')
+            break;
+    }
+    if (c == EOF && ferror(in->file) && !in->read_errno)
+        in->read_errno = errno ? errno : EIO;
+    if (length == 0)
         return NULL;
+    str[length] = '\0';
     ++in->line;
-    length = strlen(line);
-    if (length > 0 && line[length - 1] != '\n' && !feof(in->file) && !in->too_long)
-        in->too_long = in->line;
-    return line;
+    if (str[length - 1] != '\n' && length == num - 1 && !in->bad_line) {
+        c = getc(in->file); /* full buffer: over-long unless the file ends here */
+        if (c != EOF) {
+            ungetc(c, in->file);
+            in->bad_line = in->line;
+        }
+    }
+    return str;
 }
 
 static int field_index(const char *section, const char *key)
@@ -151,7 +174,7 @@ static int on_entry(void *user, const char *section, const char *key, const char
     parse *p = (parse *)user;
     const int is_base = !strcmp(section, "scene") && !strcmp(key, "base");
 
-    if (p->failed)
+    if (p->failed || p->in->bad_line) /* that line may be cut short: take nothing from it on */
         return 0;
     if (p->scan_base) {
         if (is_base) {
@@ -190,7 +213,9 @@ static int run_parser(parse *p)
 
     in.file = fopen(path, "r");
     in.line = 0;
-    in.too_long = 0;
+    in.bad_line = 0;
+    in.bad_is_nul = 0;
+    in.read_errno = 0;
     if (!in.file) {
         snprintf(p->err, p->err_size, "%s: cannot open scene file", path);
         return -1;
@@ -198,9 +223,17 @@ static int run_parser(parse *p)
     p->in = &in;
     result = ini_parse_stream(read_line, &in, on_entry, p);
     fclose(in.file);
-    if (in.too_long && !p->failed) {
-        snprintf(p->err, p->err_size, "%s:%d: line longer than %d characters", path, in.too_long,
-                 ini_max_line - 3);
+    if (in.read_errno) {
+        snprintf(p->err, p->err_size, "%s: cannot read scene file: %s", path, strerror(in.read_errno));
+        return -1;
+    }
+    if (in.bad_line && !p->failed && !(result > 0 && result < in.bad_line)) {
+        if (in.bad_is_nul)
+            snprintf(p->err, p->err_size, "%s:%d: NUL byte: not a text file (UTF-16? save it as UTF-8)",
+                     path, in.bad_line);
+        else
+            snprintf(p->err, p->err_size, "%s:%d: line longer than %d characters", path, in.bad_line,
+                     ini_max_line - 3);
         return -1;
     }
     if (p->failed)

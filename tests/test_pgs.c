@@ -17,6 +17,7 @@
 
 #define CASES_PATH "tests/data/fc2d_cases.json"
 
+static cJSON *root;
 static cJSON *cases;
 
 static int load_cases(void **state)
@@ -38,9 +39,17 @@ static int load_cases(void **state)
     }
     text[size] = '\0';
     fclose(in);
-    cases = cJSON_GetObjectItem(cJSON_Parse(text), "cases");
+    root = cJSON_Parse(text);
+    cases = cJSON_GetObjectItem(root, "cases");
     free(text);
     return cases && cJSON_GetArraySize(cases) == 50 ? 0 : -1;
+}
+
+static int free_cases(void **state)
+{
+    (void)state;
+    cJSON_Delete(root);
+    return 0;
 }
 
 static double number(const cJSON *object, const char *key)
@@ -206,5 +215,5 @@ int main(void)
         cmocka_unit_test(test_residual_formula_matches_independent_one),
         cmocka_unit_test(test_warm_start_from_solution_needs_one_sweep),
     };
-    return cmocka_run_group_tests(tests, load_cases, NULL);
+    return cmocka_run_group_tests(tests, load_cases, free_cases);
 }

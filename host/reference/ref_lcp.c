@@ -163,7 +163,7 @@ int ref_lcp_enumerate(const ref_lcp *p, double *percussion, ref_mode *mode, int 
     double trial[REF_MAX_ROWS], best[REF_MAX_ROWS];
     double kept[REF_LCP_KEEP][REF_MAX_ROWS];
     ref_mode current[REF_MAX_CONTACTS], best_mode[REF_MAX_CONTACTS];
-    double best_rel = INFINITY, rel;
+    double best_rel = HUGE_VAL, rel;
     long combos = 1, index;
     int n_kept = 0, i, r;
 

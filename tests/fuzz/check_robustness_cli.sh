@@ -1,0 +1,77 @@
+#!/bin/sh
+# check_robustness_cli.sh BEAMSLIDER - regression checks of the bad inputs
+# docs/robustness.md found mishandled (tests/robustness.mk: robustness-cli):
+# a NUL byte or UTF-16 text in a scene, a folder given as the scene, standard
+# output that cannot be written, a start position at the edge of its range
+# (host check in double, core check in bs_real). Run from the repository root.
+bin=$1
+passed=0
+failed=0
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+
+# expect DESCRIPTION STATUS TEXT ARGS...: exit status STATUS and TEXT on
+# stderr; standard output goes to $stdout
+stdout=$tmp/out
+expect() {
+    description=$1
+    want=$2
+    text=$3
+    shift 3
+    "$bin" "$@" >"$stdout" 2>"$tmp/err"
+    status=$?
+    if [ "$status" -eq "$want" ] && grep -q -F -e "$text" "$tmp/err"; then
+        passed=$((passed + 1))
+        echo "ok   - $description"
+    else
+        failed=$((failed + 1))
+        echo "FAIL - $description: exit $status (expected $want), stderr: $(cat "$tmp/err")"
+    fi
+}
+
+if [ ! -x "$bin" ] || [ ! -f configs/fig6.ini ]; then
+    echo "FAIL - usage (from the repository root): sh tests/fuzz/check_robustness_cli.sh PATH/TO/beamslider"
+    exit 1
+fi
+cp configs/mssp2023.ini "$tmp/" || exit 1
+good='[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\nacceleration = 14\n[run]\ns0 = 0.3\nt_end = 0.01\n'
+printf "$good" >"$tmp/good.ini"
+
+printf "$good" | sed 's/^s0 = 0.3$/s0 = 0.3\x00junk/' >"$tmp/nul.ini"
+expect "a NUL byte is refused with its line" 2 "nul.ini:7: NUL byte" run "$tmp/nul.ini"
+if command -v iconv >/dev/null 2>&1; then
+    printf "$good" | iconv -f UTF-8 -t UTF-16 >"$tmp/utf16.ini"
+    expect "a UTF-16 scene is refused as not text" 2 "utf16.ini:1: NUL byte" run "$tmp/utf16.ini"
+fi
+expect "a folder as the scene is a read error" 2 "cannot read scene file" run "$tmp"
+if [ -c /dev/full ]; then
+    stdout=/dev/full
+    expect "run > /dev/full exits 1" 1 "writing standard output failed" run configs/fig6.ini --t-end 0.001
+    expect "modes > /dev/full exits 1" 1 "writing standard output failed" modes configs/fig6.ini
+    expect "gen > /dev/full exits 1" 1 "writing standard output failed" gen configs/fig6_1mode.ini
+    stdout=$tmp/out
+fi
+# s0 = 0.8 is the upper end of the range the host allows for L = 0.05 m,
+# B = 0.02 m (1 - B/2L, in double); in bs_real, s0 L lands above L - B/2
+printf '[scene]\nbase = mssp2023.ini\n[beam]\nlength = 0.05\n[slider]\nslot_width = 0.02\n[excitation]\nfrequency = 124\nacceleration = 14\n[numerics]\ndt = 5e-6\n[run]\ns0 = 0.8\nt_end = 0.001\n' >"$tmp/edge.ini"
+expect "s0 at the edge the core refuses: bad input, file:line" 2 "edge.ini:13: [run] s0" run "$tmp/edge.ini" --out "$tmp/edge.csv"
+if [ -e "$tmp/edge.csv" ]; then
+    failed=$((failed + 1))
+    echo "FAIL - s0 at the edge creates no --out file"
+else
+    passed=$((passed + 1))
+    echo "ok   - s0 at the edge creates no --out file"
+fi
+# values each in range whose product overflows: the start height
+# base_displacement - com_offset = a / (2 pi f)^2 - d
+printf "$good" | sed 's/^frequency = 124$/frequency = 1e-160/' >"$tmp/overflow.ini"
+expect "excitation whose displacement overflows: names the fields" 2 "[excitation] acceleration, frequency" \
+    run "$tmp/overflow.ini"
+expect "more steps than a double counts exactly" 2 "[run] t_end = 1e+09 s is more than 2^53 steps" \
+    run "$tmp/good.ini" --dt 1e-12 --t-end 1e9
+expect "--out and --periods naming one file" 2 "--out and --periods both name" \
+    run "$tmp/good.ini" --out "$tmp/same.csv" --periods "$tmp/same.csv"
+expect "a contact-solve cap above the real-time range" 2 "allowed: an integer in [1, 100000]" \
+    run "$tmp/good.ini" --pgs-iters 1000000
+echo "check_robustness_cli: $passed passed, $failed failed ($bin)"
+[ "$failed" -eq 0 ]

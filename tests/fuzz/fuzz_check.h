@@ -1,0 +1,66 @@
+/* fuzz_check.h - invariants of the core shared by the fuzz targets. */
+#ifndef FUZZ_CHECK_H
+#define FUZZ_CHECK_H
+
+#include <stdio.h>
+#include <stdlib.h>
+#include "beamslider.h"
+
+/* Prints what broke and aborts (libFuzzer saves the input as a crash). */
+static void fuzz_fail(const char *what)
+{
+    fprintf(stderr, "fuzz invariant broken: %s\n", what);
+    abort();
+}
+
+static int fuzz_finite(bs_real x)
+{
+    return x - x == BS_R(0.0);
+}
+
+/* The whole dynamic state of a sim is finite: q, u, slider pose and
+ * velocities, the compensated-sum remainder and the warm-start percussions
+ * (members are private; a test may look). */
+static int fuzz_state_finite(const bs_sim *sim)
+{
+    int k, r;
+    for (k = 0; k < sim->scene->n_modes; ++k)
+        if (!fuzz_finite(sim->q_beam[k]) || !fuzz_finite(sim->u_beam[k]))
+            return 0;
+    for (k = 0; k < 3; ++k)
+        if (!fuzz_finite(sim->slider[k]) || !fuzz_finite(sim->slider_velocity[k]))
+            return 0;
+    if (!fuzz_finite(sim->x_c_low))
+        return 0;
+    for (k = 0; k < BS_MAX_CONTACTS; ++k)
+        for (r = 0; r < BS_ROWS; ++r)
+            if (!fuzz_finite(sim->percussion[k][r]))
+                return 0;
+    return 1;
+}
+
+/* One bs_sim_step with its contract checked: BS_OK with a finite state, or
+ * BS_E_UNSTABLE / BS_E_NONFINITE with the state (hash) as it was, also when
+ * the failing step is tried again. Returns the status. */
+static bs_status fuzz_step_checked(bs_sim *sim)
+{
+    const uint32_t before = bs_sim_hash(sim);
+    const bs_status status = bs_sim_step(sim);
+
+    if (status == BS_OK) {
+        if (!fuzz_state_finite(sim))
+            fuzz_fail("bs_sim_step returned BS_OK with a non-finite state");
+        if (bs_sim_report(sim)->sweeps < 0 || bs_sim_report(sim)->sweeps > sim->scene->pgs_max_sweeps)
+            fuzz_fail("bs_sim_step reported sweeps outside [0, pgs_max_sweeps]");
+        return status;
+    }
+    if (status != BS_E_UNSTABLE && status != BS_E_NONFINITE)
+        fuzz_fail("bs_sim_step returned a status it does not document");
+    if (bs_sim_hash(sim) != before)
+        fuzz_fail("bs_sim_step failed and changed the state");
+    if (bs_sim_step(sim) != status || bs_sim_hash(sim) != before)
+        fuzz_fail("bs_sim_step failed differently when tried again");
+    return status;
+}
+
+#endif

@@ -1,0 +1,460 @@
+/* fuzz_step.c - libFuzzer target: the core's API driven by arbitrary scene
+ * fields, start positions, states and step sequences.
+ *
+ * Base scenes are built once from configs/fig6.ini, fig6_1mode.ini and
+ * fig6_frictionless.ini (FUZZ_CONFIGS); compiled with
+ * -DBS_SCENE_CONFIG='"configs/NAME.h"' (an embedded build: constant mode
+ * count, features left out) the base is that header's bs_compiled_scene and
+ * no host code is linked. Each input picks one, perturbs scene
+ * fields (NaN, infinities, huge, tiny and denormal values, negative lengths,
+ * sign flips, values a few ulps either side of where they were, raw bit
+ * patterns, bad counts), starts a run and then plays a little program of
+ * steps, state overwrites, PCS moves and restarts. The contract checked:
+ *   - nothing crashes, hangs or reads out of bounds (ASan, UBSan);
+ *   - bs_scene_check answers BS_OK, BS_E_SCENE or BS_E_UNSTABLE, names the
+ *     field on error, and bs_sim_init refuses every scene it refuses;
+ *   - bs_sim_init, bs_sim_set_state and bs_sim_step never return BS_OK with
+ *     a non-finite state (fuzz_check.h);
+ *   - after an error status the state hash is unchanged, and stays so when
+ *     the failing step is tried again;
+ *   - bs_sim_set_state refuses non-finite values (and, free model, x_C off
+ *     the clamp stops) and otherwise stores exactly what it was given;
+ *   - NULL arguments give BS_E_NULL, a model that does not exist BS_E_ARGUMENT.
+ *
+ * Input layout (bytes; a short input reads as zeros):
+ *   [0] base scene (low 2 bits), model (bit 2), count of scene edits (>> 3)
+ *   scene edits: target byte, index (2 bytes), value (see take_value)
+ *   s0: value edit of 0.3
+ *   then opcodes until the input ends (at most FUZZ_MAX_STEPS steps in all),
+ *   op % 8: 0-2 run (op >> 3) * 2 + 1 steps, 3-4 bs_sim_set_state, 5 PCS
+ *   move, 6 queries and NULL arguments, 7 restart with another s0.
+ * FUZZ_VERBOSE in the environment prints what an input does.
+ */
+#include <float.h>
+#include <limits.h>
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "beamslider.h"
+#include "fuzz_check.h"
+#ifdef BS_SCENE_CONFIG
+#include BS_SCENE_CONFIG /* again, after beamslider.h: bs_compiled_scene */
+#else
+#include "scene_build.h"
+#endif
+
+#ifndef FUZZ_CONFIGS
+#define FUZZ_CONFIGS "configs"
+#endif
+
+#define FUZZ_MAX_STEPS 1024
+/* A step costs up to pgs_max_sweeps sweeps, by design (docs/design.md 6): the
+ * solve stops early only when a sweep does not lower the residual, and in a
+ * near-singular contact problem it creeps down for 5e5 sweeps and more
+ * (docs/robustness.md). Larger caps are lowered to this, so that an input
+ * cannot spend minutes in one step (unless FUZZ_STRICT is set). */
+#define FUZZ_MAX_SWEEPS 64
+#ifdef BS_SCENE_CONFIG
+#define FUZZ_BASES 1
+#else
+#define FUZZ_BASES 3
+static const char *const base_names[FUZZ_BASES] = { "fig6.ini", "fig6_1mode.ini", "fig6_frictionless.ini" };
+#endif
+static bs_scene bases[FUZZ_BASES];
+static bs_scene scene;
+static bs_sim sim;
+
+/* ---- reading the input ------------------------------------------------ */
+
+typedef struct input {
+    const uint8_t *data;
+    size_t size;
+} input;
+
+static unsigned take_byte(input *in)
+{
+    if (in->size == 0)
+        return 0;
+    --in->size;
+    return *in->data++;
+}
+
+static uint64_t take_bits(input *in, int bytes)
+{
+    uint64_t value = 0;
+    int i;
+    for (i = 0; i < bytes; ++i)
+        value = value << 8 | take_byte(in);
+    return value;
+}
+
+static const double special_values[] = {
+    (double)NAN, -(double)NAN, (double)INFINITY, -(double)INFINITY, 0.0, -0.0, 1.0, -1.0, 0.5, 2.0, 4.0,
+    1e-9, -1e-9, 1e9, DBL_MAX, -DBL_MAX, (double)FLT_MAX, -(double)FLT_MAX, DBL_MIN, 4.9406564584124654e-324,
+    (double)FLT_MIN, 1.4e-45,
+    1e-300, 1e300, -1e300, 1e-30, 1e30, 1e-15, 1e15, 1e38, 1e39, 1e-38, 1e-45, 3.4028235e38,
+};
+static const double factors[] = {
+    -1.0, 0.0, 2.0, 0.5, 10.0, 0.1, 1e3, 1e-3, 1e6, 1e-6, 1e15, 1e-15, 1e30, 1e-30, 1e100, 1e-100,
+    1e300, -1e300, 1.0000001, 0.9999999,
+};
+
+/* A new value for a field that holds current. */
+static bs_real take_value(input *in, bs_real current)
+{
+    const unsigned how = take_byte(in);
+    const unsigned which = take_byte(in);
+    switch (how % 7) {
+    case 0: { /* raw bit pattern */
+        bs_real value;
+        uint64_t bits = take_bits(in, (int)sizeof(bs_real));
+#if BS_REAL_FLOAT
+        uint32_t narrow = (uint32_t)bits;
+        memcpy(&value, &narrow, sizeof value);
+#else
+        memcpy(&value, &bits, sizeof value);
+#endif
+        return value;
+    }
+    case 1:
+        return (bs_real)special_values[which % (sizeof special_values / sizeof special_values[0])];
+    case 2:
+        return (bs_real)((double)current * factors[which % (sizeof factors / sizeof factors[0])]);
+    case 3: { /* a few ulps up or down */
+        bs_real value = current;
+        int i;
+        for (i = 0; i < (int)(which & 15) + 1; ++i)
+#if BS_REAL_FLOAT
+            value = nextafterf(value, which & 16 ? (float)INFINITY : -(float)INFINITY);
+#else
+            value = nextafter(value, which & 16 ? (double)INFINITY : -(double)INFINITY);
+#endif
+        return value;
+    }
+    case 4: /* a relative change of up to +-2 */
+        return (bs_real)((double)current * (1.0 + (double)(int8_t)which / 64.0));
+    case 5: /* a small integer */
+        return (bs_real)(int8_t)which;
+    default:
+        return current;
+    }
+}
+
+static int take_int(input *in, int current)
+{
+    static const int specials[] = { -1, 0, 1, 2, 3, BS_MAX_MODES - 1, BS_MAX_MODES, BS_MAX_MODES + 1,
+                                    BS_SHAPE_MAX_PIECES, BS_SHAPE_MAX_PIECES + 1, 1000, INT_MAX, INT_MIN };
+    const unsigned how = take_byte(in);
+    switch (how % 4) {
+    case 0:
+        return (int)(uint32_t)take_bits(in, 4);
+    case 1:
+        return specials[take_byte(in) % (sizeof specials / sizeof specials[0])];
+    case 2:
+        return (int)(uint32_t)((uint32_t)current + (uint32_t)(int8_t)take_byte(in)); /* wraps */
+    default:
+        return current;
+    }
+}
+
+/* ---- scene edits ------------------------------------------------------ */
+
+typedef enum kind { REAL_FIELD, INT_FIELD, PHASE_FIELD, STRETCH_SYMMETRIC, IMPLICIT_ON } kind;
+
+typedef struct target {
+    kind kind;
+    size_t offset;
+    int count; /* elements of bs_real / int */
+} target;
+
+#define REALS(member, count) { REAL_FIELD, offsetof(bs_scene, member), count }
+static const target targets[] = {
+    REALS(omega_sq, BS_MAX_MODES),
+    REALS(damping, BS_MAX_MODES),
+    REALS(gamma, BS_MAX_MODES),
+    REALS(stretch, BS_MAX_MODES * BS_MAX_MODES),
+    { STRETCH_SYMMETRIC, offsetof(bs_scene, stretch), BS_MAX_MODES * BS_MAX_MODES },
+    REALS(phi_sensor, BS_MAX_MODES),
+    REALS(shape_scale, 1),
+    REALS(shape_coef, BS_SHAPE_MAX_PIECES * BS_MAX_MODES * BS_SHAPE_COEFS),
+    REALS(length, 1),
+    REALS(half_thickness, 1),
+    REALS(corner, BS_CORNERS * 2),
+    REALS(com_offset, 1),
+    REALS(stop_min, 1),
+    REALS(stop_max, 1),
+    REALS(mass_inv, 1),
+    REALS(inertia_inv, 1),
+    REALS(gravity, 2),
+    REALS(mu, 1),
+    REALS(e_n, 1),
+    REALS(base_accel, 1),
+    REALS(base_velocity, 1),
+    REALS(base_displacement, 1),
+    REALS(dt, 1),
+    REALS(pgs_tol_rel, 1),
+    REALS(pgs_tol_abs, 1),
+    { INT_FIELD, offsetof(bs_scene, n_modes), 1 },
+    { INT_FIELD, offsetof(bs_scene, shape_pieces), 1 },
+    { INT_FIELD, offsetof(bs_scene, pgs_max_sweeps), 1 },
+    { PHASE_FIELD, offsetof(bs_scene, phase_step_half), 1 },
+#ifdef BS_WITH_IMPLICIT /* the linearly implicit step, where the core has it */
+    REALS(theta, 1),
+    REALS(mode_gain, BS_MAX_MODES),
+    { INT_FIELD, offsetof(bs_scene, implicit), 1 },
+    { IMPLICIT_ON, offsetof(bs_scene, implicit), 1 },
+#endif
+};
+#define TARGETS ((int)(sizeof targets / sizeof targets[0]))
+
+static int verbose; /* FUZZ_VERBOSE set: print what an input does (to read a reproducer) */
+
+static void edit_scene(input *in)
+{
+    const int which = (int)(take_byte(in) % TARGETS);
+    const target *t = &targets[which];
+    const int index = (int)(take_bits(in, 2) % (uint64_t)t->count);
+    char *field = (char *)&scene + t->offset;
+
+    if (verbose)
+        fprintf(stderr, "edit: target %d (offset %zu) element %d\n", which, t->offset, index);
+
+    switch (t->kind) {
+    case REAL_FIELD: {
+        bs_real *value = (bs_real *)field + index;
+        *value = take_value(in, *value);
+        break;
+    }
+    case STRETCH_SYMMETRIC: { /* keeps S symmetric, so the check looks further */
+        const int i = index / BS_MAX_MODES, j = index % BS_MAX_MODES;
+        scene.stretch[i][j] = scene.stretch[j][i] = take_value(in, scene.stretch[i][j]);
+        break;
+    }
+    case INT_FIELD: {
+        int *value = (int *)field;
+        *value = take_int(in, *value);
+        break;
+    }
+    case PHASE_FIELD: {
+        static const uint64_t specials[] = { 0, 1, (uint64_t)1 << 61, ((uint64_t)1 << 62) - 1, (uint64_t)1 << 62,
+                                             UINT64_MAX };
+        const unsigned how = take_byte(in);
+        scene.phase_step_half = how & 1 ? take_bits(in, 8) : specials[(how >> 1) % 6];
+        break;
+    }
+    case IMPLICIT_ON:
+#ifdef BS_WITH_IMPLICIT
+    { /* a consistent implicit scene: the gains as the host computes them */
+        int k;
+        scene.implicit = 1;
+        scene.theta = take_value(in, BS_R(0.5) + (bs_real)(take_byte(in) & 7) * BS_R(0.0625));
+        for (k = 0; k < BS_MAX_MODES; ++k)
+            scene.mode_gain[k] = BS_R(1.0) / (BS_R(1.0) + scene.theta * scene.dt * scene.damping[k]
+                                               + scene.theta * scene.theta * scene.dt * scene.dt * scene.omega_sq[k]);
+    }
+#endif
+        break;
+    }
+}
+
+/* ---- the program -------------------------------------------------------- */
+
+static void check_init(bs_status check, bs_status init)
+{
+    if (init != BS_OK && init != BS_E_SCENE && init != BS_E_UNSTABLE && init != BS_E_ARGUMENT)
+        fuzz_fail("bs_sim_init returned a status it does not document");
+    if (check != BS_OK && init != check)
+        fuzz_fail("bs_sim_init did not refuse a scene bs_scene_check refuses, with the same status");
+    if (check == BS_OK && init != BS_OK && init != BS_E_ARGUMENT)
+        fuzz_fail("bs_sim_init refused a checked scene for a reason other than s0");
+    if (init == BS_OK && !fuzz_state_finite(&sim))
+        fuzz_fail("bs_sim_init returned BS_OK with a non-finite state");
+}
+
+/* Equal values (x_C is read back as x_C + its remainder, which turns -0 into +0). */
+static int same(bs_real a, bs_real b)
+{
+    return !(a < b) && !(a > b);
+}
+
+/* Overwrites parts of the state with fuzzed values through bs_sim_set_state. */
+static void set_state(input *in)
+{
+    bs_real q[BS_MAX_MODES], u[BS_MAX_MODES], pose[3], velocity[3], got[4][BS_MAX_MODES > 3 ? BS_MAX_MODES : 3];
+    bs_real *const part[4] = { q, u, pose, velocity };
+    const int length[4] = { scene.n_modes, scene.n_modes, 3, 3 };
+    const unsigned parts = take_byte(in); /* bit p: pass part p */
+    const int edits = (int)(take_byte(in) & 7);
+    const uint32_t before = bs_sim_hash(&sim);
+    int finite = 1;
+    int e, p, k;
+    bs_status status;
+
+    bs_sim_get_state(&sim, q, u, pose, velocity);
+    for (e = 0; e < edits; ++e) {
+        p = (int)(take_byte(in) & 3);
+        if (length[p] > 0) {
+            k = (int)(take_byte(in) % (unsigned)length[p]);
+            part[p][k] = take_value(in, part[p][k]);
+        }
+    }
+    for (p = 0; p < 4; ++p)
+        for (k = 0; parts >> p & 1 && k < length[p]; ++k)
+            finite &= fuzz_finite(part[p][k]);
+    status = bs_sim_set_state(&sim, parts & 1 ? q : NULL, parts & 2 ? u : NULL, parts & 4 ? pose : NULL,
+                              parts & 8 ? velocity : NULL);
+    if (status != BS_OK) {
+        if (status != BS_E_ARGUMENT)
+            fuzz_fail("bs_sim_set_state returned a status it does not document");
+        if (finite && !(parts & 4))
+            fuzz_fail("bs_sim_set_state refused finite values");
+        if (bs_sim_hash(&sim) != before)
+            fuzz_fail("bs_sim_set_state failed and changed the state");
+        return;
+    }
+    if (!finite)
+        fuzz_fail("bs_sim_set_state accepted a non-finite value");
+    if (!fuzz_state_finite(&sim))
+        fuzz_fail("bs_sim_set_state returned BS_OK with a non-finite state");
+    bs_sim_get_state(&sim, got[0], got[1], got[2], got[3]);
+    for (p = 0; p < 4; ++p)
+        for (k = 0; parts >> p & 1 && k < length[p]; ++k)
+            if (!same(got[p][k], part[p][k])) {
+                fprintf(stderr, "part %d [%d]: set %.9g, read back %.9g\n", p, k, (double)part[p][k],
+                        (double)got[p][k]);
+                fuzz_fail("bs_sim_set_state did not store what it was given");
+            }
+}
+
+int LLVMFuzzerInitialize(int *argc, char ***argv);
+int LLVMFuzzerInitialize(int *argc, char ***argv)
+{
+#ifndef BS_SCENE_CONFIG
+    static scene_file file;
+    static scene_model model;
+    char path[SCENE_PATH];
+    char err[1024];
+    int i;
+#endif
+
+    (void)argc;
+    (void)argv;
+    verbose = getenv("FUZZ_VERBOSE") != NULL;
+#ifdef BS_SCENE_CONFIG
+    bases[0] = bs_compiled_scene;
+#else
+    for (i = 0; i < FUZZ_BASES; ++i) {
+        snprintf(path, sizeof path, "%s/%s", FUZZ_CONFIGS, base_names[i]);
+        if (scene_read(path, &file, &bases[i], &model, err, sizeof err) != 0) {
+            fprintf(stderr, "fuzz_step: %s\n", err);
+            fuzz_fail("cannot build the base scenes");
+        }
+    }
+#endif
+    return 0;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    input in = { data, size };
+    const unsigned head = take_byte(&in);
+    const bs_model model = head & 4 ? BS_MODEL_PCS : BS_MODEL_FREE;
+    const char *field = NULL;
+    bs_status check, status;
+    bs_real s0;
+    int steps = 0;
+    int i;
+
+    scene = bases[(head & 3) % FUZZ_BASES];
+    for (i = 0; i < (int)(head >> 3); ++i)
+        edit_scene(&in);
+    if (scene.pgs_max_sweeps > FUZZ_MAX_SWEEPS && !getenv("FUZZ_STRICT"))
+        scene.pgs_max_sweeps = FUZZ_MAX_SWEEPS;
+
+    check = bs_scene_check(&scene, &field);
+    if (check != BS_OK && check != BS_E_SCENE && check != BS_E_UNSTABLE)
+        fuzz_fail("bs_scene_check returned a status it does not document");
+    if (check != BS_OK && (!field || !*field))
+        fuzz_fail("bs_scene_check refused a scene without naming the field");
+    s0 = take_value(&in, BS_R(0.3));
+    status = bs_sim_init(&sim, &scene, model, s0);
+    if (verbose)
+        fprintf(stderr, "base %u, model %d, bs_scene_check: %s (%s), s0 %.17g, bs_sim_init: %s\n", (head & 3) % FUZZ_BASES,
+                (int)model, bs_status_text(check), field ? field : "-", (double)s0, bs_status_text(status));
+    check_init(check, status);
+    if (status != BS_OK)
+        return 0;
+
+    while (in.size > 0 && steps < FUZZ_MAX_STEPS) {
+        const unsigned op = take_byte(&in);
+        if (verbose)
+            fprintf(stderr, "op %u (%u) after %d steps\n", op % 8, op, steps);
+        switch (op % 8) {
+        case 0:
+        case 1:
+        case 2: { /* run up to 64 steps, or until the step refuses */
+            int n;
+            for (n = 0; n < (int)(op >> 3) * 2 + 1 && steps < FUZZ_MAX_STEPS; ++n, ++steps) {
+                status = fuzz_step_checked(&sim);
+                if (verbose)
+                    fprintf(stderr, "  step %d: %s, contacts 0x%x, sweeps %d, residual %g\n", steps + 1,
+                            bs_status_text(status), bs_sim_report(&sim)->active, bs_sim_report(&sim)->sweeps,
+                            (double)bs_sim_report(&sim)->residual);
+                if (status != BS_OK)
+                    break;
+            }
+            break;
+        }
+        case 3:
+        case 4:
+            set_state(&in);
+            break;
+        case 5: { /* PCS: move the prescribed position */
+            const uint32_t before = bs_sim_hash(&sim);
+            const bs_real s = take_value(&in, BS_R(0.5));
+            status = bs_sim_set_pcs_position(&sim, s);
+            if (status != (model == BS_MODEL_PCS && s >= BS_R(0.0) && s <= BS_R(1.0) ? BS_OK : BS_E_ARGUMENT))
+                fuzz_fail("bs_sim_set_pcs_position: wrong status");
+            if (bs_sim_hash(&sim) != before)
+                fuzz_fail("bs_sim_set_pcs_position changed the state");
+            break;
+        }
+        case 6: { /* the read-only queries */
+            const bs_real phase = bs_sim_phase(&sim);
+            bs_real pose[3];
+            if (!(phase >= BS_R(0.0) && phase < BS_R(1.0)))
+                fuzz_fail("bs_sim_phase outside [0, 1)");
+            bs_sim_get_state(&sim, NULL, NULL, pose, NULL);
+            (void)bs_sim_sensor(&sim);
+            (void)bs_sim_position(&sim);
+            (void)bs_status_text((bs_status)((int)(op >> 3) - 16));
+            { /* NULL pointers and a model that does not exist; the sim is untouched */
+                static bs_sim scratch;
+                const uint32_t before = bs_sim_hash(&sim);
+                if (bs_scene_check(NULL, NULL) != BS_E_NULL
+                    || bs_sim_init(NULL, &scene, model, s0) != BS_E_NULL || bs_sim_init(&scratch, NULL, model, s0) != BS_E_NULL
+                    || bs_sim_step(NULL) != BS_E_NULL || bs_sim_set_state(NULL, NULL, NULL, NULL, NULL) != BS_E_NULL
+                    || bs_sim_set_pcs_position(NULL, BS_R(0.5)) != BS_E_NULL)
+                    fuzz_fail("a NULL argument was not answered with BS_E_NULL");
+                if (bs_sim_init(&scratch, &scene, (bs_model)(int)(op >> 3), s0) == BS_OK && (op >> 3) > 1)
+                    fuzz_fail("bs_sim_init accepted a model that does not exist");
+                if (bs_sim_hash(&sim) != before)
+                    fuzz_fail("a call on another sim changed the state");
+            }
+            break;
+        }
+        default: /* restart with another s0 */
+            s0 = take_value(&in, s0);
+            status = bs_sim_init(&sim, &scene, model, s0);
+            check_init(check, status);
+            if (status != BS_OK)
+                return 0;
+            break;
+        }
+    }
+    return 0;
+}
