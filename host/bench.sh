@@ -83,11 +83,15 @@ with one mode, so that the 60 s signature move takes under 3 s.
 
 A whole run is measured, so the figure depends on the trajectory: steps with
 two corners of one face in contact cost about twice a free step (the contact
-solve then needs its subspace step, docs/design.md section 6). The float run
-of fig6_1mode jumps to the high branch at 5 s, the double run at 30 s
-(docs/validation.md section 5), so the float run spends twice as many steps
-in such contact and is slower for that reason, not because float arithmetic
-is slower. Where a target is missed the table says so.
+solve then needs its subspace step, docs/design.md section 6). The float and
+the double run of a scene follow different trajectories (the dynamics are
+chaotic, docs/accuracy.md) and so spend different numbers of steps in such
+contact; the gap between the two precisions of one scene is mostly that, not
+the cost of the arithmetic. Where a target is missed the table says so; for
+fig6_1mode, \`perf record build/double/beamslider run configs/fig6_1mode.ini
+--t-end 30\` puts 28 % of the time in bs_pgs_solve, 16 % in setting up the
+active corners and 8 % in the Delassus matrix, so the missing speed would
+have to come from the contact path.
 
 The authors' MATLAB code, run under Octave, does about 230 steps/s on this kind
 of machine according to the issue that set these targets; it is not in this
