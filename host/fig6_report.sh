@@ -75,7 +75,7 @@ $(json max_pgs_iters "$TMP/v.json") | $(json unconverged_steps "$TMP/v.json") |
 "
     echo "fig6_report: $label: s_min $(json s_min "$TMP/v.json")" >&2
 }
-variant "default (dt 2e-5, cap 4, tolerance 1e-5 / 1e-7 N s), double" build/double/beamslider configs/fig6.ini
+variant "default (dt 2e-5, cap 2, tolerance 1e-5 / 1e-7 N s), double" build/double/beamslider configs/fig6.ini
 variant "default, float" build/float/beamslider configs/fig6.ini
 variant "dt = 1e-5 s" build/double/beamslider configs/fig6.ini --dt 1e-5
 variant "dt = 5e-6 s" build/double/beamslider configs/fig6.ini --dt 5e-6
