@@ -98,34 +98,14 @@ static void print_summary(const scene_file *file, const bs_scene *scene, const r
            r->contact_steps ? (double)r->total_sweeps / (double)r->contact_steps : 0.0, r->hash);
 }
 
-static int open_output(const char *path, FILE **file)
-{
-    *file = NULL;
-    if (!path)
-        return 0;
-    *file = fopen(path, "w");
-    if (!*file) {
-        cli_error("cannot open %s for writing: %s", path, strerror(errno));
-        return -1;
-    }
-    return 0;
-}
-
 /* Closes an output; reports and returns -1 if it misses anything: its own
  * write failed, or the run stopped early because another one did. */
 static int close_output(const char *path, FILE *file, const run_result *result)
 {
-    int own_error;
     if (!file)
         return 0;
-    errno = result->write_errno;
-    own_error = ferror(file) != 0;
-    own_error |= fclose(file) != 0;
-    if (own_error) {
-        cli_error("writing %s failed: %s; the file is incomplete", path,
-                  errno ? strerror(errno) : "write error");
+    if (cli_close_output(path, file, result->write_errno) != 0)
         return -1;
-    }
     if (result->write_failed) {
         cli_error("%s holds the run only up to t = %.6f s: it stopped at a write error", path, result->t);
         return -1;
@@ -152,9 +132,9 @@ int cli_run(int argc, char **argv)
         return CLI_USAGE;
     }
     /* outputs are opened only once the input is known to be good */
-    if (open_output(cli.out_path, &csv) != 0)
+    if (cli_open_output(cli.out_path, &csv) != 0)
         return CLI_FAILED;
-    if (open_output(cli.periods_path, &periods) != 0) {
+    if (cli_open_output(cli.periods_path, &periods) != 0) {
         if (csv)
             fclose(csv);
         return CLI_FAILED;

@@ -174,33 +174,13 @@ static int parse_options(int argc, char **argv, sweep_cli *cli, sweep_options *o
     return 0;
 }
 
-static int open_output(const char *path, FILE **file)
-{
-    *file = NULL;
-    if (!path)
-        return 0;
-    *file = fopen(path, "w");
-    if (!*file) {
-        cli_error("cannot open %s for writing: %s", path, strerror(errno));
-        return -1;
-    }
-    return 0;
-}
-
 /* Closes an output; reports and returns -1 if it misses anything. */
 static int close_output(const char *path, FILE *file, const sweep_result *result, int points)
 {
-    int own_error;
     if (!file)
         return 0;
-    errno = result->write_errno;
-    own_error = ferror(file) != 0;
-    own_error |= fclose(file) != 0;
-    if (own_error) {
-        cli_error("writing %s failed: %s; the file is incomplete", path,
-                  errno ? strerror(errno) : "write error");
+    if (cli_close_output(path, file, result->write_errno) != 0)
         return -1;
-    }
     if (result->write_failed) {
         cli_error("%s holds only %d of %d points: the sweep stopped at a write error", path,
                   result->points_done, points);
@@ -231,9 +211,9 @@ int cli_sweep(int argc, char **argv)
         cli_error("%s", err);
         return CLI_USAGE;
     }
-    if (open_output(cli.out_path, &csv) != 0)
+    if (cli_open_output(cli.out_path, &csv) != 0)
         return CLI_FAILED;
-    if (open_output(cli.trace_path, &trace) != 0) {
+    if (cli_open_output(cli.trace_path, &trace) != 0) {
         fclose(csv);
         return CLI_FAILED;
     }

@@ -7,52 +7,8 @@
 # Prints one line per check and a summary; exits 1 if any check failed.
 
 bin=${1:-}
-passed=0
-failed=0
-
-pass() {
-    passed=$((passed + 1))
-    echo "ok   - $1"
-}
-
-fail() {
-    failed=$((failed + 1))
-    echo "FAIL - $1"
-    if [ -n "${2:-}" ]; then
-        printf '%s\n' "$2" | sed 's/^/       /'
-    fi
-}
-
-# check_status DESCRIPTION EXPECTED ACTUAL STDERR_FILE
-check_status() {
-    if [ "$3" -eq "$2" ]; then
-        pass "$1"
-    else
-        fail "$1" "exit status $3, expected $2; stderr: $(cat "$4")"
-    fi
-}
-
-# check_has DESCRIPTION FILE STRING: FILE contains STRING (fixed string).
-check_has() {
-    if grep -q -F -e "$3" "$2"; then
-        pass "$1"
-    else
-        fail "$1" "no \"$3\" in: $(cat "$2")"
-    fi
-}
-
-if [ -z "$bin" ] || [ ! -x "$bin" ]; then
-    echo "FAIL - usage: sh host/figures/check_sweep.sh PATH/TO/beamslider (got '$bin', not executable)"
-    exit 1
-fi
-if [ ! -f configs/fig6.ini ]; then
-    echo "FAIL - run from the repository root (configs/fig6.ini not found)"
-    exit 1
-fi
-
-tmp=$(mktemp -d) || exit 1
-trap 'rm -rf "$tmp"' EXIT
-trap 'rm -rf "$tmp"; exit 1' INT TERM
+. "$(dirname "$0")/../../tests/check_lib.sh"
+check_setup host/figures/check_sweep.sh "$bin"
 
 small="--from 0.2 --to 0.3 --step 0.05 --hold 2 --record 3"
 
