@@ -10,7 +10,8 @@
 #                         AddressSanitizer + UndefinedBehaviorSanitizer
 #   make robustness-valgrind  the test programs and the CLI under valgrind
 #                         memcheck (test_sim: all but its two long runs)
-#   make fuzz-short       every fuzz target for FUZZ_TEST_SECONDS (10) each
+#   make fuzz-short       every fuzz target for FUZZ_TEST_SECONDS (60) each,
+#                         FUZZ_JOBS (2) at a time
 #   make robustness-cli   regression checks of the CLI fixes, float and double
 #
 # `make test` runs robustness-cli, robustness-asan, robustness-valgrind and fuzz-short
@@ -20,7 +21,8 @@
 FUZZ_CC ?= clang
 ASAN_CC ?= gcc
 FUZZ_SECONDS ?= 60
-FUZZ_TEST_SECONDS ?= 10
+FUZZ_TEST_SECONDS ?= 60
+FUZZ_JOBS ?= 2
 FUZZ_BUILD := $(BUILD)/fuzz
 # fuzz_step_fig6_1mode, fuzz_step_fig6_frictionless: the core compiled against
 # configs/NAME.h as in an embedded build (FUZZ_COMPILED: NAME:PRECISION)
@@ -103,7 +105,11 @@ fuzz: fuzz-build
 	@set -e; $(foreach t,$(FUZZ_TARGETS),$(call fuzz_run,$t,$(FUZZ_SECONDS));)
 
 fuzz-short: fuzz-build
-	@set -e; $(foreach t,$(FUZZ_TARGETS),$(call fuzz_run,$t,$(FUZZ_TEST_SECONDS));)
+	@$(MAKE) --no-print-directory -j$(FUZZ_JOBS) $(FUZZ_TARGETS:%=fuzz-short-%)
+
+# one target's run of fuzz-short (each has its own corpus and artifacts)
+fuzz-short-%: fuzz-build
+	@$(call fuzz_run,$*,$(FUZZ_TEST_SECONDS))
 
 # Line coverage of what the corpora reach: the targets rebuilt with clang's
 # source-based coverage (no sanitizers), each corpus replayed once.
