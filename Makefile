@@ -3,6 +3,7 @@
 #   make              build build/beamslider (REAL precision)
 #   make run          build and run the fig6 scene (60 s), print its summary
 #   make test         build and run every test, float and double
+#   make test-sweeps  the contact solve's tests built with -DBS_WITH_SUBSPACE=0
 #   make bench        steps per second -> docs/performance.md
 #   make fig6-report  the signature move in numbers -> docs/validation.md
 #   make configs      regenerate the compile-time scene headers configs/*.h
@@ -60,7 +61,7 @@ TEST_LIBS := -lcmocka -lcjson $(HOST_LIBS)
 BUILD_PACKAGES := gcc make libc6-dev libinih-dev
 TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev libcjson-dev binutils
 
-.PHONY: all run test test-one bench fig6-report configs embedded-test embedded-report stability accuracy accuracy-check clean deps-build deps-test
+.PHONY: all run test test-one test-sweeps bench fig6-report configs embedded-test embedded-report stability accuracy accuracy-check clean deps-build deps-test
 .SECONDARY:
 .DEFAULT_GOAL := all
 
@@ -110,6 +111,10 @@ EMB_CHECKS := cortex-m4f:fig6:float:20000 cortex-m4f:fig6_1mode:float:20000 \
 # TARGET:REAL per scene for `make embedded-report`
 EMB_COST_TARGETS := cortex-m4f:float cortex-m7:float cortex-m7:double cortex-m3:float cortex-m0plus:float
 EMB_COST_SCENES := fig6 fig6_1mode fig6_frictionless
+# ... and the contact solve without its subspace step (-DBS_WITH_SUBSPACE=0,
+# a hard bound on the cost of a step), on the FPU targets' float builds
+EMB_SWEEPS_TARGETS := cortex-m4f:float cortex-m7:float
+EMB_SWEEPS_SCENES := fig6 fig6_1mode
 emb_steps = $(if $(filter cortex-m3 cortex-m0plus,$1),2000,20000)
 
 emb_word = $(word $2,$(subst :, ,$1))
@@ -117,6 +122,8 @@ $(foreach c,$(EMB_CHECKS),$(call cm_image,check-$(call emb_word,$c,2)-$(call emb
     $(EMB_SRC),$(call emb_flags,$(call emb_word,$c,2),$(call emb_word,$c,3),$(call emb_word,$c,4),)))
 $(foreach s,$(EMB_COST_SCENES),$(foreach t,$(EMB_COST_TARGETS),$(call cm_image,cost-$s-$(call emb_word,$t,2),\
     $(call emb_word,$t,1),$(EMB_SRC),$(call emb_flags,$s,$(call emb_word,$t,2),$(call emb_steps,$(call emb_word,$t,1)),-DBS_RUN_COST=1))))
+$(foreach s,$(EMB_SWEEPS_SCENES),$(foreach t,$(EMB_SWEEPS_TARGETS),$(call cm_image,cost-$s-$(call emb_word,$t,2)-sweeps,\
+    $(call emb_word,$t,1),$(EMB_SRC),$(call emb_flags,$s,$(call emb_word,$t,2),20000,-DBS_RUN_COST=1 -DBS_WITH_SUBSPACE=0))))
 
 # The host twin of a check image: build/embhost/check-SCENE-REAL-STEPS
 EMB_HOST := $(BUILD)/embhost
@@ -134,9 +141,13 @@ embedded-test: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_CHECK_PAIRS),$(call emb_wor
 	$(if $(CM_TOOLS_OK),@set -e; $(foreach c,$(EMB_CHECKS),NM=arm-none-eabi-nm sh tests/check_core_symbols.sh \
 	    $(call emb_word,$c,3) $(CM_BUILD)/$(call emb_word,$c,1)/check-$(call emb_word,$c,2)-$(call emb_word,$c,3).obj/core/*.o;))
 
-EMB_COST_ELFS := $(foreach s,$(EMB_COST_SCENES),$(foreach t,$(EMB_COST_TARGETS),$(call cm_elf,cost-$s-$(call emb_word,$t,2),$(call emb_word,$t,1))))
-embedded-report: $(EMB_COST_ELFS)
-	sh host/embedded_report.sh $(foreach s,$(EMB_COST_SCENES),$(foreach t,$(EMB_COST_TARGETS),$(call emb_word,$t,1):$s:$(call emb_word,$t,2):$(call cm_elf,cost-$s-$(call emb_word,$t,2),$(call emb_word,$t,1))))
+# report arguments TARGET:SCENE:REAL:SOLVE:ELF
+EMB_COST_SPECS := $(foreach s,$(EMB_COST_SCENES),$(foreach t,$(EMB_COST_TARGETS),\
+    $(call emb_word,$t,1):$s:$(call emb_word,$t,2):subspace:$(call cm_elf,cost-$s-$(call emb_word,$t,2),$(call emb_word,$t,1)))) \
+    $(foreach s,$(EMB_SWEEPS_SCENES),$(foreach t,$(EMB_SWEEPS_TARGETS),\
+    $(call emb_word,$t,1):$s:$(call emb_word,$t,2):sweeps:$(call cm_elf,cost-$s-$(call emb_word,$t,2)-sweeps,$(call emb_word,$t,1))))
+embedded-report: $(foreach c,$(EMB_COST_SPECS),$(call emb_word,$c,5))
+	sh host/embedded_report.sh $(EMB_COST_SPECS)
 
 ifeq ($(TARGET),host)
 run: all
@@ -161,9 +172,18 @@ test-one: $(TEST_BIN) $(OBJ)/beamslider
 	@sh tests/check_cli.sh $(OBJ)/beamslider
 	@sh tests/check_configs.sh $(OBJ)/beamslider
 
+# The contact solve built without its subspace step (BS_WITH_SUBSPACE=0, the
+# real-time option of docs/porting.md): its unit tests in both precisions.
+SWEEPS_BUILD := $(BUILD)/sweeps
+SWEEPS_FLAGS := CFLAGS="$(CFLAGS) -DBS_WITH_SUBSPACE=0" BUILD=$(SWEEPS_BUILD)
+test-sweeps:
+	@set -e; for real in double float; do \
+	    $(MAKE) --no-print-directory -s REAL=$$real $(SWEEPS_FLAGS) $(SWEEPS_BUILD)/$$real/tests/test_pgs; \
+	    echo "== $(SWEEPS_BUILD)/$$real/tests/test_pgs (-DBS_WITH_SUBSPACE=0)"; $(SWEEPS_BUILD)/$$real/tests/test_pgs; done
+
 # Fragments of the other tools (figures, reference, robustness) add their own
 # targets and append test targets to TEST_EXTRA.
-TEST_EXTRA := accuracy-check
+TEST_EXTRA := test-sweeps accuracy-check
 -include host/figures.mk host/reference/reference.mk tests/robustness.mk
 
 test: deps-test
@@ -192,6 +212,8 @@ $(OBJ)/bs-stability: host/tools/stability.c $(HOST_LIB_OBJ) $(CORE_OBJ)
 accuracy: $(BUILD)/bs-reference
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
 	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
+	$(MAKE) --no-print-directory REAL=double $(SWEEPS_FLAGS) $(SWEEPS_BUILD)/double/beamslider
+	$(MAKE) --no-print-directory REAL=float $(SWEEPS_FLAGS) $(SWEEPS_BUILD)/float/beamslider
 	sh host/accuracy.sh
 
 accuracy-check: $(BUILD)/bs-reference

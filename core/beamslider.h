@@ -59,7 +59,9 @@ typedef struct bs_contact_set {
     bs_real mu[BS_MAX_CONTACTS];                 /* friction coefficient (0 at the stops) */
 #endif
     bs_real percussion[BS_ROWS * BS_MAX_CONTACTS];     /* P [N s] */
+#if BS_WITH_SUBSPACE
     bs_real system[BS_ROWS * BS_MAX_CONTACTS][BS_ROWS * BS_MAX_CONTACTS + 1]; /* subspace step's [A | b] */
+#endif
 } bs_contact_set;
 
 typedef struct bs_sim {

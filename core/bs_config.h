@@ -61,6 +61,9 @@
 #ifndef BS_WITH_IMPLICIT        /* the linearly implicit theta variant of the step */
 #define BS_WITH_IMPLICIT 1
 #endif
+#ifndef BS_WITH_SUBSPACE        /* the contact solve's subspace step (core/bs_pgs.c): exact on */
+#define BS_WITH_SUBSPACE 1      /* redundant contacts; 0 bounds a step at plain sweeps */
+#endif
 
 /* Rows of the contact problem per contact: normal, and tangential with friction. */
 #define BS_ROWS (BS_WITH_FRICTION ? 2 : 1)

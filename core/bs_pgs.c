@@ -35,6 +35,9 @@
  * repeats or SUBSPACE_TRIES sets were tried; the P with the smallest residual
  * is kept. With the right modes that is the exact solution. (Projected
  * Gauss-Seidel subspace minimisation: Silcowitz, Niebe, Erleben 2010.)
+ * A build with BS_WITH_SUBSPACE 0 leaves the step out: each solve is then at
+ * most max_sweeps plain sweeps, a hard bound on its cost for a real-time
+ * loop, and redundant contacts end the step unconverged (reported).
  *
  * Warm start: P comes in holding each contact's percussion of the last step.
  * Stop: after each sweep (and subspace step) the natural-map residual of the
@@ -233,6 +236,7 @@ bs_real bs_pgs_scale(const bs_contact_set *set)
     return percussion_scale(set, step);
 }
 
+#if BS_WITH_SUBSPACE
 /* Mode contact a shows at percussion p. */
 static int mode_of(const bs_contact_set *set, int a)
 {
@@ -405,6 +409,8 @@ static void try_subspace(bs_contact_set *set, const bs_real *step, bs_real *best
         set->percussion[j] = best[j];
 }
 
+#endif /* BS_WITH_SUBSPACE */
+
 bs_pgs_result bs_pgs_solve(bs_contact_set *set, int max_sweeps, bs_real tol_rel, bs_real tol_abs)
 {
     bs_pgs_result result;
@@ -421,8 +427,10 @@ bs_pgs_result bs_pgs_solve(bs_contact_set *set, int max_sweeps, bs_real tol_rel,
             solve_contact(set, step, a);
         ++result.sweeps;
         result.residual = residual(set, step);
+#if BS_WITH_SUBSPACE
         if (result.residual > tolerance && set->count > 1)
             try_subspace(set, step, &result.residual);
+#endif
         result.converged = result.residual <= tolerance;
         /* stop at the cap, or when a round made no progress: then the
          * residual sits at what the precision can resolve for this G */

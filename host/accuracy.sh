@@ -18,8 +18,10 @@
 #   cost         host wall time per simulated second (the 30 s run, one core)
 # Sweeps: dt in DTS = {5e-6, 1e-5, 2e-5, 4e-5, 8e-5} s, contact-solve cap in
 # CAPS = {1, 2, 4, 8, 16, 32, unbounded (100000)}, float and double, fig6
-# (five modes) and fig6_1mode. ENSEMBLE runs (default 8) for the default
-# settings' comparison.
+# (five modes) and fig6_1mode; and at dt 2e-5 s the builds without the
+# contact solve's subspace step (float-sweeps, double-sweeps: build/sweeps,
+# -DBS_WITH_SUBSPACE=0). ENSEMBLE runs (default 8) for the default settings'
+# comparison; FD_ENSEMBLE runs per build (default 512) for float against double.
 set -eu
 OUT=${OUT:-docs/accuracy.md}
 FIG=${FIG:-docs/figures/work_precision.png}
@@ -107,9 +109,9 @@ verdicts=$(awk '{ low[$1] = $2; high[$1] = $3; amp[$1] = $4 }
 acceptance=$(awk '{ for (i = 2; i <= 4; ++i) v[$1, i] = $i }
     function worst(a, b,   i, d, w) { w = 0; for (i = 2; i <= 4; ++i) { d = v[a, i] / v[b, i] - 1; if (d < 0) d = -d; if (d > w) w = d }; return 100 * w }
     function pct(a, b, i) { return 100 * (v[a, i] / v[b, i] - 1) }
-    END { printf "The float build at the default settings differs from the reference at the same dt by at most %.1f %% in the three quantities (%s the 2 %% of the accuracy issue); from the double build by at most %.1f %% (%s 2 %%; the ensembles'"'"' standard errors above are of the order of a percent).\n\n", \
+    END { printf "The float build at the default settings differs from the reference at the same dt by at most %.1f %% in the three quantities (%s the 2 %% of the accuracy issue); from the double build by at most %.1f %%, which these few runs cannot resolve against 2 %% (their standard errors are of the order of a percent; the section \"Float against double\" below does it with many runs).\n\n", \
                  worst("float", "ref-coarse"), worst("float", "ref-coarse") <= 2 ? "within" : "**outside**", \
-                 worst("float", "double"), worst("float", "double") <= 2 ? "within" : "**outside**"
+                 worst("float", "double")
           printf "The error the default settings carry against the converged model (the reference at dt 5e-6 s) is %+.1f %%, %+.1f %% and %+.1f %% (low-branch speed, high-branch speed, amplitude; core float). For comparison, the time discretisation alone, the reference'"'"'s own change from dt 5e-6 to 2e-5 s: %+.1f %%, %+.1f %% and %+.1f %%.", \
                  pct("float", "ref-fine", 2), pct("float", "ref-fine", 3), pct("float", "ref-fine", 4), \
                  pct("ref-coarse", "ref-fine", 2), pct("ref-coarse", "ref-fine", 3), pct("ref-coarse", "ref-fine", 4) }' "$TMP/ensemble-means")
@@ -129,11 +131,14 @@ for scene in fig6 fig6_1mode; do
                 echo "$scene $real $dt $cap"
             done
         done
+        for cap in ${SWEEPS_CAPS:-1 2 4 16 100000}; do
+            echo "$scene $real-sweeps 2e-5 $cap"
+        done
     done
 done > "$TMP/jobs"
 echo "accuracy: $(wc -l < "$TMP/jobs") configurations" >&2
 xargs -P "$JOBS" -L 1 sh -c 'every=$(awk -v dt="$3" "BEGIN { printf \"%d\", 8e-5 / dt + 0.5 }");
-        tag="$1-$2-$3-$4"; bin=build/$2/beamslider;
+        tag="$1-$2-$3-$4"; bin=build/$2/beamslider; case $2 in *-sweeps) bin=build/sweeps/${2%-sweeps}/beamslider ;; esac;
         "$bin" run "configs/$1.ini" --dt "$3" --pgs-iters "$4" --t-end 0.05 --out "$TMP/$tag-w.csv" --every "$every" > /dev/null 2>&1 || true;
         "$bin" run "configs/$1.ini" --dt "$3" --pgs-iters "$4" --t-end 30 --periods "$TMP/$tag-p.csv" > "$TMP/$tag.json" 2> /dev/null || true' sh < "$TMP/jobs"
 
@@ -158,6 +163,7 @@ while read -r scene real dt cap; do
     rows="$rows| $scene | $real | $dt | $capname | $1 | $2 | $3 | $4 | $5 | $cost | ok, $(json unconverged_steps "$TMP/$tag.json") unconverged |
 "
     [ "$4" != - ] && echo "$scene $real $dt $capname $cost $4 $5" >> "$TMP/points"
+    [ "$dt" = 2e-5 ] && echo "$scene $real $capname $cost $4 $5 $(json unconverged_steps "$TMP/$tag.json") $(json max_pgs_iters "$TMP/$tag.json")" >> "$TMP/solves"
 done < "$TMP/jobs"
 
 # Pareto front per scene on cost and |high-branch speed error|.
@@ -180,13 +186,49 @@ for scene in fig6 fig6_1mode; do
         by_dt="$by_dt$(awk -v s="$scene" -v dt="$dt" -v insn="${insn:-0}" '
             function median(a, n,   i, j, t) { for (i = 2; i <= n; ++i) for (j = i; j > 1 && a[j - 1] > a[j]; --j) { t = a[j]; a[j] = a[j - 1]; a[j - 1] = t }
                                               return n % 2 ? a[(n + 1) / 2] : (a[n / 2] + a[n / 2 + 1]) / 2 }
-            $1 == s && $3 == dt && $4 != 1 { e = $6 < 0 ? -$6 : $6; m = $7 < 0 ? -$7 : $7; err[++n] = e; amp[n] = m; cost[n] = $5 }
+            $1 == s && $3 == dt && $4 != 1 && ($2 == "float" || $2 == "double") { e = $6 < 0 ? -$6 : $6; m = $7 < 0 ? -$7 : $7; err[++n] = e; amp[n] = m; cost[n] = $5 }
             END { if (!n) exit
                   m4 = insn > 0 ? sprintf("%.0f M (%.0f %% of 168 MHz)", insn / dt / 1e6, 100 * insn / dt / 168e6) : "-"
                   printf "| %s | %s | %.1f %% | %.1f %% | %.4f | %s |\n", s, dt, 100 * median(err, n), 100 * median(amp, n), median(cost, n), m4 }' "$TMP/points")
 "
     done
 done
+
+# the default solve against plain sweeps (-DBS_WITH_SUBSPACE=0), dt 2e-5 s
+solve_rows=$(awk '{ print ($3 == "none" ? 1e9 : $3), $0 }' "$TMP/solves" | sort -k2,2 -k1,1g -k3,3 |
+    awk '{ printf "| %s | %s | %s | %s | %s | %s | %s | %s |\n", $2, $3, $4, $8, $9, $6, $7, $5 }')
+solve_verdict=$(awk '$1 == "fig6" && $3 == 2 && ($2 == "float" || $2 == "float-sweeps") { u[$2] = $7; e[$2] = $5; a[$2] = $6 }
+    END { printf "At the default cap of 2, fig6 in float: with the subspace step %d steps of 1.5e6 end unconverged, high-branch speed error %s, amplitude error %s; with plain sweeps %d (%.0f %%), errors %s and %s. Single runs scatter by several percent in these errors (first section), so differences of that size say little; the unconverged count is the plain measure.", \
+                 u["float"], e["float"], a["float"], u["float-sweeps"], 100 * u["float-sweeps"] / 1.5e6, e["float-sweeps"], a["float-sweeps"] }' "$TMP/solves")
+
+# --- float against double: a larger ensemble ---------------------------------
+# Single runs scatter by several percent, so whether float reproduces the
+# double build's drift within 2 % needs many runs: FD_ENSEMBLE runs of each
+# build (s0 = 0.3 + 1e-5 k), the difference of the means with twice its
+# standard error.
+FD_ENSEMBLE=${FD_ENSEMBLE:-512}
+k=0
+while [ "$k" -lt "$FD_ENSEMBLE" ]; do
+    s0=$(awk -v k="$k" 'BEGIN { printf "%.5f", 0.3 + 1e-5 * k }')
+    echo "double $s0"; echo "float $s0"
+    k=$((k + 1))
+done > "$TMP/fd-jobs"
+echo "accuracy: float against double, $FD_ENSEMBLE runs each" >&2
+xargs -P "$JOBS" -L 1 sh -c 'build/$1/beamslider run configs/fig6.ini --t-end 30 --s0 "$2" --periods "$TMP/fd-$1-$2.csv" > /dev/null 2>&1' sh \
+    < "$TMP/fd-jobs"
+for real in double float; do
+    for f in "$TMP"/fd-$real-*.csv; do echo "$real $(speeds "$f")"; done
+done > "$TMP/fd-speeds"
+fd_rows=$(awk '{ n[$1]++; for (i = 2; i <= 4; ++i) { m[$1, i] += $i; q[$1, i] += $i * $i } }
+    END { split("low-branch speed,high-branch speed,settled amplitude", name, ",")
+          for (i = 2; i <= 4; ++i) {
+              for (b = 1; b <= 2; ++b) { r = b == 1 ? "double" : "float"
+                  mean[r] = m[r, i] / n[r]; v = (q[r, i] - n[r] * mean[r] * mean[r]) / (n[r] - 1); se[r] = sqrt(v > 0 ? v : 0) / sqrt(n[r]) }
+              d = 100 * (mean["float"] / mean["double"] - 1)
+              e = 100 * sqrt(se["float"] ^ 2 + se["double"] ^ 2) / mean["double"]
+              ad = d < 0 ? -d : d
+              verdict = ad + 2 * e <= 2 ? "within 2 %" : (ad - 2 * e > 2 ? "**outside** 2 %" : "not resolved: the interval straddles 2 %")
+              printf "| %s | %.4e +- %.1e | %.4e +- %.1e | %+.2f %% +- %.2f %% | %s |\n", name[i - 1], mean["double"], se["double"], mean["float"], se["float"], d, 2 * e, verdict } }' "$TMP/fd-speeds")
 
 # --- long runs: 60 s and 600 s, float against double -------------------------
 long_rows=""
@@ -204,7 +246,7 @@ long_verdict=$(awk '{ low[$1, $2] = $3; high[$1, $2] = $4 }
     function pct(a, b) { return 100 * (a / b - 1) }
     function verdict(t,   l, h) { l = pct(low["float", t], low["double", t]); h = pct(high["float", t], high["double", t])
                                  return sprintf("%+.1f %% and %+.1f %% at %s s (%s 2 %%)", l, h, t, (l < 0 ? -l : l) <= 2 && (h < 0 ? -h : h) <= 2 ? "within" : "**outside**") }
-    END { printf "Float against double, low- and high-branch speed: %s; %s. These are single runs, which scatter by several percent (the ensembles above); the ensemble comparison in the first section is the steadier measure.", verdict(60), verdict(600) }' "$TMP/long-speeds")
+    END { printf "Float against double, low- and high-branch speed: %s; %s. These are single runs, which scatter by several percent; the section \"Float against double\" above measures the difference with many runs.", verdict(60), verdict(600) }' "$TMP/long-speeds")
 
 # --- figure -------------------------------------------------------------------
 for series in "fig6 double" "fig6 float" "fig6_1mode double" "fig6_1mode float"; do
@@ -301,6 +343,33 @@ mean (docs/embedded.md); a 480 MHz Cortex-M7 has the room. The one-mode scene fi
 on average, but it is a different model (turning point, docs/validation.md), and its rows
 compare single runs with a single reference run, so their errors carry the whole
 run-to-run scatter.
+
+## Without the subspace step
+
+A core built with \`-DBS_WITH_SUBSPACE=0\` (the "sweeps" builds; \`make test\` runs the
+contact solve's unit tests so built) ends each contact solve after at most cap plain
+Gauss-Seidel sweeps: the cost of a step has a hard bound (docs/embedded.md: the worst
+Cortex-M4F step, "sweeps" rows), but where two corners of one face touch the sweeps crawl
+and the step ends unconverged, reported as such. Single 30 s runs at dt = 2e-5 s (1.5e6
+steps), errors against the reference at dt 5e-6 s as above ("none": cap 100000):
+
+| scene | build | cap | unconverged steps | most sweeps in a step | high-branch speed error | amplitude error | cost [s/s] |
+|---|---|---|---|---|---|---|---|
+$solve_rows
+
+$solve_verdict
+
+## Float against double
+
+The accuracy issue asks that float reproduce the double build's transport velocity
+within 2 %. A single run cannot show that (next section), so: $FD_ENSEMBLE runs of fig6 per
+build at the default settings, started 1e-5 L apart, 30 s each; means with standard
+errors, and the float-double difference with twice its standard error (about a 95 %
+interval):
+
+| quantity | double | float | float vs double | 2 % |
+|---|---|---|---|---|
+$fd_rows
 
 ## Long runs: float against double
 
