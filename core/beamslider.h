@@ -51,8 +51,8 @@ typedef struct bs_step_report {
 typedef struct bs_contact_set {
     int count;                                   /* active contacts */
     int id[BS_MAX_CONTACTS];                     /* contact index 0..5 of each active contact */
-    bs_real dir_beam[BS_MAX_CONTACTS][BS_ROWS][BS_MAX_MODES];    /* W columns, modal part */
-    bs_real dir_slider[BS_MAX_CONTACTS][BS_ROWS][BS_SLIDER_DOF]; /* W columns, slider part */
+    bs_real dir_beam[BS_ROWS * BS_MAX_CONTACTS][BS_MAX_MODES];    /* W column of row BS_ROWS a + r, modal part */
+    bs_real dir_slider[BS_ROWS * BS_MAX_CONTACTS][BS_SLIDER_DOF]; /* W column, slider part */
     bs_real delassus[BS_ROWS * BS_MAX_CONTACTS][BS_ROWS * BS_MAX_CONTACTS]; /* G = W^T M^-1 W */
     bs_real free_velocity[BS_ROWS * BS_MAX_CONTACTS];  /* c: xi = G P + c */
 #if BS_WITH_FRICTION
@@ -63,6 +63,13 @@ typedef struct bs_contact_set {
     bs_real system[BS_ROWS * BS_MAX_CONTACTS][BS_ROWS * BS_MAX_CONTACTS + 1]; /* subspace step's [A | b] */
 #endif
 } bs_contact_set;
+
+/* Bounds on the mode shapes that let a step skip evaluating a slot corner
+ * which is certainly open (bs_contact.c); computed once by bs_sim_init. */
+typedef struct bs_shape_bound {
+    bs_real slope[BS_MAX_MODES];       /* >= max |phi_k'| on [0, L] [1/(m sqrt(kg))] */
+    bs_real jump[BS_MAX_MODES];        /* piece mismatch and rounding of phi_k [1/sqrt(kg)] */
+} bs_shape_bound;
 
 typedef struct bs_sim {
     const bs_scene *scene;
@@ -78,6 +85,7 @@ typedef struct bs_sim {
     bs_real percussion[BS_MAX_CONTACTS][BS_ROWS]; /* last step's percussions, warm start */
     bs_step_report report;
     bs_contact_set contacts;
+    bs_shape_bound shape_bound;
 } bs_sim;
 
 /* Checks every field of a scene: BS_OK, BS_E_NULL, BS_E_SCENE (a field out of

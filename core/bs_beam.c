@@ -15,6 +15,7 @@
  * and the cubic part weighs on the low modes, mode 5's row on mode 5.
  */
 #include "bs_beam.h"
+#include "bs_port.h"
 
 bs_real bs_beam_force(const bs_scene *scene, const bs_real *q, const bs_real *q_stiff, const bs_real *u,
                       bs_real base_accel, int linear_explicit, bs_real *force)
@@ -40,7 +41,7 @@ bs_real bs_beam_force(const bs_scene *scene, const bs_real *q, const bs_real *q_
         bs_real row = linear_explicit ? scene->omega_sq[i] : BS_R(0.0);
         for (j = 0; j < n; ++j) {
             const bs_real entry = BS_R(2.0) * sq[i] * sq[j] + stretch_energy * scene->stretch[i][j];
-            row += entry < BS_R(0.0) ? -entry : entry;
+            row += bs_fabs(entry);
         }
         if (row > bound)
             bound = row;

@@ -45,35 +45,90 @@
 #include "bs_port.h"
 #include "bs_shape.h"
 
+/* A slot corner at the midpoint and, once evaluated, the beam under it. */
+typedef struct corner_point {
+    bs_real arm_x, arm_z;          /* A rho */
+    bs_real x, z;                  /* r_P */
+    bs_real w, w_slope;            /* w and w' at x */
+    bs_real phi[BS_MAX_MODES];
+    bs_real slope[BS_MAX_MODES];
+} corner_point;
+
+static bs_real corner_zeta(int corner)
+{
+    return (corner == 0 || corner == 3) ? BS_R(1.0) : BS_R(-1.0);
+}
+
+static void locate_corner(const bs_scene *scene, const bs_contact_frame *frame, int corner,
+                          bs_real cos_beta, bs_real sin_beta, corner_point *p)
+{
+    const bs_real *rho = scene->corner[corner];
+    p->arm_x = cos_beta * rho[0] + sin_beta * rho[1];
+    p->arm_z = -sin_beta * rho[0] + cos_beta * rho[1];
+    p->x = frame->x_kinematic + p->arm_x;
+    p->z = frame->z + p->arm_z;
+}
+
+static void beam_under_corner(const bs_scene *scene, const bs_contact_frame *frame, corner_point *p)
+{
+    bs_shape_deflection(scene, p->x, frame->q_beam, p->phi, p->slope, &p->w, &p->w_slope);
+}
+
+/* zeta d_z - h/2 w'^2, the sign of g_N: active when < 0. */
+static bs_real gap_sign(const bs_scene *scene, const bs_contact_frame *frame, bs_real zeta,
+                        const corner_point *p)
+{
+    const bs_real hh = scene->half_thickness;
+    const bs_real d_z = p->z - frame->base.displacement - p->w - zeta * hh;
+    return zeta * d_z - hh * p->w_slope * p->w_slope;
+}
+
+/* 1 if corner `other` (located, not evaluated) is certainly open, judged from
+ * the beam under the evaluated corner p of the same face. The two lie a
+ * rotation times the slot height apart, so |w_other - w_p| <= change =
+ * sum |q_k| (slope_k |dx| + jump_k) and |w'_other| <= sum |q_k| slope_k
+ * (q_slope); if the gap_sign of `other` stays positive by more than its
+ * rounding under the worst of these, evaluating it would find it open too:
+ * skipping it changes no result. The play keeps one corner of each face at
+ * least about half the play (25 um) open, which is what this finds. */
+static int certainly_open(const bs_scene *scene, const bs_contact_frame *frame, bs_real zeta,
+                          const corner_point *p, const corner_point *other,
+                          bs_real q_slope, bs_real q_jump)
+{
+    const bs_real hh = scene->half_thickness;
+    const bs_real dx = bs_fabs(other->x - p->x);
+    bs_real change, worst, rounding;
+
+    if (!(p->x >= BS_R(0.0) && p->x <= scene->length && other->x >= BS_R(0.0)
+          && other->x <= scene->length && dx * scene->shape_scale < BS_R(1.0)))
+        return 0; /* a clamp or more than one piece boundary between them */
+    change = q_slope * dx + q_jump;
+    worst = zeta * (other->z - frame->base.displacement - p->w - zeta * hh) - change
+            - hh * q_slope * q_slope;
+    rounding = BS_R(64.0) * BS_REAL_EPS * (bs_fabs(other->z) + bs_fabs(frame->base.displacement)
+                                          + bs_fabs(p->w) + hh + change + hh * q_slope * q_slope);
+    return worst > rounding;
+}
+
+/* Appends the evaluated corner to the active set if g_N < 0. */
 static void add_corner(const bs_scene *scene, const bs_contact_frame *frame, int corner,
-                       bs_real cos_beta, bs_real sin_beta, bs_contact_set *set,
+                       const corner_point *p, bs_contact_set *set,
                        bs_real base_term[BS_MAX_CONTACTS][BS_ROWS])
 {
     const int n = BS_NMODES(scene);
-    const bs_real zeta = (corner == 0 || corner == 3) ? BS_R(1.0) : BS_R(-1.0);
+    const bs_real zeta = corner_zeta(corner);
     const bs_real hh = scene->half_thickness;
-    const bs_real *rho = scene->corner[corner];
-    const bs_real arm_x = cos_beta * rho[0] + sin_beta * rho[1];
-    const bs_real arm_z = -sin_beta * rho[0] + cos_beta * rho[1];
-    const bs_real x_p = frame->x_kinematic + arm_x;
-    const bs_real z_p = frame->z + arm_z;
-    bs_real phi[BS_MAX_MODES];
-    bs_real slope[BS_MAX_MODES];
-    bs_real w = BS_R(0.0);
-    bs_real w_slope = BS_R(0.0);
+    const bs_real w_slope = p->w_slope;
+    const bs_real *phi = p->phi;
+    const bs_real *slope = p->slope;
     bs_real cos_alpha, sin_alpha, n_x, n_z, d_x, d_z, gap_n, a1, a2, coef_nn, coef_ns;
     int a;
     int k;
 
-    bs_shape_eval(scene, x_p, phi, slope);
-    for (k = 0; k < n; ++k) {
-        w += phi[k] * frame->q_beam[k];
-        w_slope += slope[k] * frame->q_beam[k];
-    }
-    d_x = zeta * hh * w_slope;
-    d_z = z_p - frame->base.displacement - w - zeta * hh;
-    if (!(zeta * d_z - hh * w_slope * w_slope < BS_R(0.0)))
+    if (!(gap_sign(scene, frame, zeta, p) < BS_R(0.0)))
         return;
+    d_x = zeta * hh * w_slope;
+    d_z = p->z - frame->base.displacement - p->w - zeta * hh;
     cos_alpha = BS_R(1.0) / bs_sqrt(BS_R(1.0) + w_slope * w_slope);
     sin_alpha = w_slope * cos_alpha;
     n_x = -zeta * sin_alpha;
@@ -86,10 +141,10 @@ static void add_corner(const bs_scene *scene, const bs_contact_frame *frame, int
     a2 = -zeta * hh * w_slope;
     coef_nn = -n_z;                               /* factor of phi_k in W_N */
     coef_ns = -n_x * a1 - n_z * a2;               /* factor of phi_k' in W_N, + g_T below */
-    set->dir_slider[a][0][0] = n_x;
-    set->dir_slider[a][0][1] = n_z;
+    set->dir_slider[BS_ROWS * a][0] = n_x;
+    set->dir_slider[BS_ROWS * a][1] = n_z;
 #if BS_WITH_ROTATION
-    set->dir_slider[a][0][2] = n_x * arm_z - n_z * arm_x;
+    set->dir_slider[BS_ROWS * a][2] = n_x * p->arm_z - n_z * p->arm_x;
 #endif
     base_term[a][0] = -n_z * frame->base.velocity;
 #if BS_WITH_FRICTION
@@ -102,11 +157,11 @@ static void add_corner(const bs_scene *scene, const bs_contact_frame *frame, int
         coef_ns += gap_t;
         set->mu[a] = scene->mu;
         for (k = 0; k < n; ++k)
-            set->dir_beam[a][1][k] = coef_tn * phi[k] + coef_ts * slope[k];
-        set->dir_slider[a][1][0] = t_x;
-        set->dir_slider[a][1][1] = t_z;
+            set->dir_beam[BS_ROWS * a + 1][k] = coef_tn * phi[k] + coef_ts * slope[k];
+        set->dir_slider[BS_ROWS * a + 1][0] = t_x;
+        set->dir_slider[BS_ROWS * a + 1][1] = t_z;
 #if BS_WITH_ROTATION
-        set->dir_slider[a][1][2] = t_x * arm_z - t_z * arm_x;
+        set->dir_slider[BS_ROWS * a + 1][2] = t_x * p->arm_z - t_z * p->arm_x;
 #endif
         base_term[a][1] = -t_z * frame->base.velocity;
     }
@@ -114,7 +169,7 @@ static void add_corner(const bs_scene *scene, const bs_contact_frame *frame, int
     (void)gap_n; /* the tangential row is what needs it */
 #endif
     for (k = 0; k < n; ++k)
-        set->dir_beam[a][0][k] = coef_nn * phi[k] + coef_ns * slope[k];
+        set->dir_beam[BS_ROWS * a][k] = coef_nn * phi[k] + coef_ns * slope[k];
 }
 
 static void add_stop(const bs_scene *scene, int id, bs_real sign, bs_contact_set *set,
@@ -129,12 +184,12 @@ static void add_stop(const bs_scene *scene, int id, bs_real sign, bs_contact_set
 #endif
     for (r = 0; r < BS_ROWS; ++r) {
         for (k = 0; k < BS_NMODES(scene); ++k)
-            set->dir_beam[a][r][k] = BS_R(0.0);
+            set->dir_beam[BS_ROWS * a + r][k] = BS_R(0.0);
         for (k = 0; k < BS_SLIDER_DOF; ++k)
-            set->dir_slider[a][r][k] = BS_R(0.0);
+            set->dir_slider[BS_ROWS * a + r][k] = BS_R(0.0);
         base_term[a][r] = BS_R(0.0);
     }
-    set->dir_slider[a][0][0] = sign;
+    set->dir_slider[BS_ROWS * a][0] = sign;
 }
 
 #if BS_WITH_ROTATION
@@ -162,14 +217,37 @@ void bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
                        bs_contact_set *set, bs_real base_term[BS_MAX_CONTACTS][BS_ROWS])
 {
     bs_real cos_beta = BS_R(1.0), sin_beta = BS_R(0.0);
-    int corner;
+    bs_real q_slope = BS_R(0.0), q_jump = BS_R(0.0);
+    int face, k;
 
 #if BS_WITH_ROTATION
     rotation(frame->beta, &cos_beta, &sin_beta);
 #endif
+    if (frame->shape_bound)
+        for (k = 0; k < BS_NMODES(scene); ++k) {
+            const bs_real size = bs_fabs(frame->q_beam[k]);
+            q_slope += size * frame->shape_bound->slope[k];
+            q_jump += size * frame->shape_bound->jump[k];
+        }
     set->count = 0;
-    for (corner = 0; corner < BS_CORNERS; ++corner)
-        add_corner(scene, frame, corner, cos_beta, sin_beta, set, base_term);
+    for (face = 0; face < 2; ++face) { /* P1, P2 (left), then P3, P4 (right) */
+        const int top = face ? 3 : 0, bottom = face ? 2 : 1;
+        corner_point at_top, at_bottom;
+        int bottom_open;
+        locate_corner(scene, frame, top, cos_beta, sin_beta, &at_top);
+        beam_under_corner(scene, frame, &at_top);
+        locate_corner(scene, frame, bottom, cos_beta, sin_beta, &at_bottom);
+        bottom_open = frame->shape_bound
+                      && certainly_open(scene, frame, BS_R(-1.0), &at_top, &at_bottom, q_slope, q_jump);
+        if (!bottom_open)
+            beam_under_corner(scene, frame, &at_bottom);
+        if (face == 0)
+            add_corner(scene, frame, top, &at_top, set, base_term);
+        if (!bottom_open)
+            add_corner(scene, frame, bottom, &at_bottom, set, base_term);
+        if (face == 1)
+            add_corner(scene, frame, top, &at_top, set, base_term);
+    }
     if (frame->stops) {
         if (frame->x_stops < scene->stop_min)
             add_stop(scene, BS_STOP_LEFT, BS_R(1.0), set, base_term);
@@ -178,25 +256,44 @@ void bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
     }
 }
 
-void bs_contact_velocity(const bs_scene *scene, const bs_contact_set *set,
-                         const bs_real *u_beam, const bs_real *u_slider,
-                         const bs_real base_term[BS_MAX_CONTACTS][BS_ROWS],
-                         bs_real gamma[BS_ROWS * BS_MAX_CONTACTS])
+/* W_r^T u + w~_r of active contact a, row r. */
+static bs_real row_velocity(const bs_scene *scene, const bs_contact_set *set, int a, int r,
+                            const bs_real *u_beam, const bs_real *u_slider,
+                            const bs_real base_term[BS_MAX_CONTACTS][BS_ROWS])
 {
-    int a, r, k;
+    const bs_real *beam = set->dir_beam[BS_ROWS * a + r];
+    const bs_real *slider = set->dir_slider[BS_ROWS * a + r];
+    bs_real v = base_term[a][r];
+    int k;
+    v += slider[0] * u_slider[0];
+    v += slider[1] * u_slider[1];
+#if BS_WITH_ROTATION
+    v += slider[2] * u_slider[2];
+#endif
+    for (k = 0; k < BS_NMODES(scene); ++k)
+        v += beam[k] * u_beam[k];
+    return v;
+}
 
-    for (a = 0; a < set->count; ++a) {
+void bs_contact_free_velocity(const bs_scene *scene, bs_contact_set *set,
+                              const bs_real *u_beam, const bs_real *u_slider,
+                              const bs_real *u_beam_before, const bs_real *u_slider_before,
+                              const bs_real base_term[BS_MAX_CONTACTS][BS_ROWS])
+{
+    int a, r;
+
+    for (a = 0; a < set->count; ++a)
         for (r = 0; r < BS_ROWS; ++r) {
-            const bs_real *beam = set->dir_beam[a][r];
-            const bs_real *slider = set->dir_slider[a][r];
-            bs_real v = base_term[a][r];
-            for (k = 0; k < BS_SLIDER_DOF; ++k)
-                v += slider[k] * u_slider[k];
-            for (k = 0; k < BS_NMODES(scene); ++k)
-                v += beam[k] * u_beam[k];
-            gamma[BS_ROWS * a + r] = v;
+            bs_real v = row_velocity(scene, set, a, r, u_beam, u_slider, base_term);
+#if BS_WITH_RESTITUTION
+            if (r == 0)
+                v += scene->e_n * row_velocity(scene, set, a, 0, u_beam_before, u_slider_before, base_term);
+#else
+            (void)u_beam_before;
+            (void)u_slider_before;
+#endif
+            set->free_velocity[BS_ROWS * a + r] = v;
         }
-    }
 }
 
 void bs_contact_delassus(const bs_scene *scene, bs_contact_set *set)
@@ -205,11 +302,11 @@ void bs_contact_delassus(const bs_scene *scene, bs_contact_set *set)
     int i, j, k;
 
     for (i = 0; i < rows; ++i) {
-        const bs_real *beam_i = set->dir_beam[i / BS_ROWS][i % BS_ROWS];
-        const bs_real *slider_i = set->dir_slider[i / BS_ROWS][i % BS_ROWS];
+        const bs_real *beam_i = set->dir_beam[i];
+        const bs_real *slider_i = set->dir_slider[i];
         for (j = i; j < rows; ++j) {
-            const bs_real *beam_j = set->dir_beam[j / BS_ROWS][j % BS_ROWS];
-            const bs_real *slider_j = set->dir_slider[j / BS_ROWS][j % BS_ROWS];
+            const bs_real *beam_j = set->dir_beam[j];
+            const bs_real *slider_j = set->dir_slider[j];
             bs_real g = scene->mass_inv * (slider_i[0] * slider_j[0] + slider_i[1] * slider_j[1]);
 #if BS_WITH_ROTATION
             g += scene->inertia_inv * slider_i[2] * slider_j[2];
@@ -230,22 +327,21 @@ void bs_contact_delassus(const bs_scene *scene, bs_contact_set *set)
 void bs_contact_apply(const bs_scene *scene, const bs_contact_set *set,
                       bs_real *u_beam, bs_real *u_slider)
 {
-    int a, r, k;
+    int i, k;
 
-    for (a = 0; a < set->count; ++a)
-        for (r = 0; r < BS_ROWS; ++r) {
-            const bs_real p = set->percussion[BS_ROWS * a + r];
-            const bs_real *slider = set->dir_slider[a][r];
-            for (k = 0; k < BS_NMODES(scene); ++k)
+    for (i = 0; i < BS_ROWS * set->count; ++i) {
+        const bs_real p = set->percussion[i];
+        const bs_real *slider = set->dir_slider[i];
+        for (k = 0; k < BS_NMODES(scene); ++k)
 #if BS_WITH_IMPLICIT
-                u_beam[k] += scene->mode_gain[k] * set->dir_beam[a][r][k] * p;
+            u_beam[k] += scene->mode_gain[k] * set->dir_beam[i][k] * p;
 #else
-                u_beam[k] += set->dir_beam[a][r][k] * p;
+            u_beam[k] += set->dir_beam[i][k] * p;
 #endif
-            u_slider[0] += scene->mass_inv * slider[0] * p;
-            u_slider[1] += scene->mass_inv * slider[1] * p;
+        u_slider[0] += scene->mass_inv * slider[0] * p;
+        u_slider[1] += scene->mass_inv * slider[1] * p;
 #if BS_WITH_ROTATION
-            u_slider[2] += scene->inertia_inv * slider[2] * p;
+        u_slider[2] += scene->inertia_inv * slider[2] * p;
 #endif
-        }
+    }
 }

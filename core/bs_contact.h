@@ -19,6 +19,7 @@ typedef struct bs_contact_frame {
     bs_real beta;           /* [rad] */
     int stops;              /* 1: clamp end stops take part */
     bs_base base;           /* base motion */
+    const bs_shape_bound *shape_bound; /* lets certainly open corners be skipped; NULL: evaluate all */
 } bs_contact_frame;
 
 /* Finds the contacts with g_N < 0 and fills set->count, id, mu (with
@@ -27,12 +28,14 @@ typedef struct bs_contact_frame {
 void bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
                        bs_contact_set *set, bs_real base_term[BS_MAX_CONTACTS][BS_ROWS]);
 
-/* Relative velocity gamma = W^T u + w~ of every active contact (u_slider:
- * x_C, z_C, beta velocities). */
-void bs_contact_velocity(const bs_scene *scene, const bs_contact_set *set,
-                         const bs_real *u_beam, const bs_real *u_slider,
-                         const bs_real base_term[BS_MAX_CONTACTS][BS_ROWS],
-                         bs_real gamma[BS_ROWS * BS_MAX_CONTACTS]);
+/* The free velocity c of the contact problem, set->free_velocity: per active
+ * contact the relative velocity gamma = W^T u + w~ at the free velocities u
+ * (u_slider: x_C, z_C, beta velocities), plus on the normal row e_N times
+ * gamma_N at the velocities before the step (Newton's impact law). */
+void bs_contact_free_velocity(const bs_scene *scene, bs_contact_set *set,
+                              const bs_real *u_beam, const bs_real *u_slider,
+                              const bs_real *u_beam_before, const bs_real *u_slider_before,
+                              const bs_real base_term[BS_MAX_CONTACTS][BS_ROWS]);
 
 /* Delassus operator G = W^T M^-1 W of the active contacts. */
 void bs_contact_delassus(const bs_scene *scene, bs_contact_set *set);

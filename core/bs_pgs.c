@@ -57,6 +57,7 @@
  * (MODEL.md 9.5: report it, never hide it).
  */
 #include "bs_pgs.h"
+#include "bs_port.h"
 
 #define ROWS BS_ROWS
 #define MAX_ROWS (BS_ROWS * BS_MAX_CONTACTS)
@@ -66,7 +67,7 @@ enum { MODE_TAKEOFF, MODE_STICK, MODE_SLIP_POS, MODE_SLIP_NEG }; /* slip +: xi_T
 
 static bs_real magnitude(bs_real value)
 {
-    return value < BS_R(0.0) ? -value : value;
+    return bs_fabs(value);
 }
 
 /* xi of contact a's rows with the current P. */
@@ -268,29 +269,21 @@ static void subspace_solve(bs_contact_set *set, const int *mode, bs_real *trial)
     int pivot_column[MAX_ROWS];
     int i, j, col, rank = 0;
 
-    for (i = 0; i < set->count; ++i) {
-        int r;
-        for (r = 0; r < ROWS; ++r)
+    for (i = 0; i < ROWS * set->count; ++i) { /* rows of a law on P alone */
+        const int a = i / ROWS;
+        if (mode[a] == MODE_TAKEOFF || (i % ROWS && mode[a] != MODE_STICK)) {
             for (j = 0; j <= rows; ++j)
-                m[ROWS * i + r][j] = BS_R(0.0);
-        if (mode[i] == MODE_TAKEOFF) {
-            for (r = 0; r < ROWS; ++r)
-                m[ROWS * i + r][ROWS * i + r] = BS_R(1.0);
-            continue;
-        }
-        for (j = 0; j < rows; ++j)
-            m[ROWS * i][j] = set->delassus[ROWS * i][j];
-        m[ROWS * i][rows] = -set->free_velocity[ROWS * i];
+                m[i][j] = BS_R(0.0);
+            m[i][i] = BS_R(1.0);
 #if BS_WITH_FRICTION
-        if (mode[i] == MODE_STICK) {
-            for (j = 0; j < rows; ++j)
-                m[2 * i + 1][j] = set->delassus[2 * i + 1][j];
-            m[2 * i + 1][rows] = -set->free_velocity[2 * i + 1];
-        } else {
-            m[2 * i + 1][2 * i + 1] = BS_R(1.0);
-            m[2 * i + 1][2 * i] = mode[i] == MODE_SLIP_POS ? set->mu[i] : -set->mu[i];
-        }
+            if (i % ROWS && mode[a] != MODE_TAKEOFF) /* slip: P_T + s mu P_N = 0 */
+                m[i][i - 1] = mode[a] == MODE_SLIP_POS ? set->mu[a] : -set->mu[a];
 #endif
+        } else { /* xi = 0 */
+            for (j = 0; j < rows; ++j)
+                m[i][j] = set->delassus[i][j];
+            m[i][rows] = -set->free_velocity[i];
+        }
     }
     for (col = 0; col < rows && rank < rows; ++col) {
         bs_real size = BS_R(0.0);

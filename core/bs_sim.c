@@ -37,6 +37,7 @@
 #include "bs_contact.h"
 #include "bs_excitation.h"
 #include "bs_pgs.h"
+#include "bs_shape.h"
 
 /* sum + low += increment, exactly up to the rounding of the new low part. */
 static void add_compensated(bs_real *sum, bs_real *low, bs_real increment)
@@ -95,6 +96,7 @@ bs_status bs_sim_init(bs_sim *sim, const bs_scene *scene, bs_model model, bs_rea
     sim->report.residual = BS_R(0.0);
     sim->report.converged = 1;
     sim->contacts.count = 0;
+    bs_shape_bounds(scene, &sim->shape_bound);
     return BS_OK;
 }
 
@@ -117,15 +119,7 @@ static void solve_contacts(bs_sim *sim, const bs_real base_term[BS_MAX_CONTACTS]
     bs_pgs_result result;
     int a, r;
 
-    bs_contact_velocity(scene, set, u_beam, u_slider, base_term, set->free_velocity);
-#if BS_WITH_RESTITUTION
-    {
-        bs_real gamma_before[BS_ROWS * BS_MAX_CONTACTS];
-        bs_contact_velocity(scene, set, sim->u_beam, sim->slider_velocity, base_term, gamma_before);
-        for (a = 0; a < set->count; ++a)
-            set->free_velocity[BS_ROWS * a] += scene->e_n * gamma_before[BS_ROWS * a];
-    }
-#endif
+    bs_contact_free_velocity(scene, set, u_beam, u_slider, sim->u_beam, sim->slider_velocity, base_term);
     for (a = 0; a < set->count; ++a) /* warm start */
         for (r = 0; r < BS_ROWS; ++r)
             set->percussion[BS_ROWS * a + r] = sim->percussion[set->id[a]][r];
@@ -200,6 +194,7 @@ bs_status bs_sim_step(bs_sim *sim)
     frame.z = slider_mid[1];
     frame.beta = slider_mid[2];
     frame.stops = sim->model == BS_MODEL_FREE;
+    frame.shape_bound = &sim->shape_bound;
     bs_contact_detect(scene, &frame, &sim->contacts, base_term);
     sim->report.sweeps = 0;
     sim->report.residual = BS_R(0.0);

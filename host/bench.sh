@@ -87,11 +87,10 @@ solve then needs its subspace step, docs/design.md section 6). The float and
 the double run of a scene follow different trajectories (the dynamics are
 chaotic, docs/accuracy.md) and so spend different numbers of steps in such
 contact; the gap between the two precisions of one scene is mostly that, not
-the cost of the arithmetic. Where a target is missed the table says so; for
-fig6_1mode, \`perf record build/double/beamslider run configs/fig6_1mode.ini
---t-end 30\` puts 28 % of the time in bs_pgs_solve, 16 % in setting up the
-active corners and 8 % in the Delassus matrix, so the missing speed would
-have to come from the contact path.
+the cost of the arithmetic. Where a target is missed the table says so. The
+machine is shared: the range column shows how far single runs scatter, and a
+median within a few percent of its target can land on either side of it on
+another day.
 
 The authors' MATLAB code, run under Octave, does about 230 steps/s on this kind
 of machine according to the issue that set these targets; it is not in this
@@ -106,11 +105,15 @@ each, $sweep_steps steps together), up and down run in parallel on the two cores
 ## Where the time goes
 
 Per step: one sine/cosine pair for the excitation phase and one for the slider
-rotation, the modal forces (N^2 for the cubic term), the mode shapes at the
-four slot corners (a degree-7 polynomial per mode and corner), and, for the
-active corners only, a square root, the force directions, the Delassus matrix
-and the contact solve. The solve takes one sweep in almost every contact step
-(exact 2x2 solves per contact, plus the subspace step for pairs of corners on
-one face, see docs/design.md); the columns above show it.
+rotation, the modal forces (N^2 for the cubic term), the mode shapes under the
+top corner of each side of the slot and under the bottom corner only when
+bounds cannot rule it out (docs/design.md section 5; a degree-7 polynomial per
+mode and corner), and, for the active corners only, a square root, the force
+directions, the Delassus matrix and the contact solve. The solve takes one
+sweep in almost every contact step (exact 2x2 solves per contact, plus the
+subspace step for pairs of corners on one face, see docs/design.md); the
+columns above show it. Magnitudes in the solve go through the port's
+\`bs_fabs\` rather than a compare and a negation: the signs are unpredictable,
+and the branches cost more than the arithmetic around them.
 EOF
 echo "bench: wrote $OUT" >&2

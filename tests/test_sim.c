@@ -221,6 +221,17 @@ static void test_pcs_kinematics_ignore_the_drifting_x(void **state)
     assert_true(fabs((double)bs_sim_position(&other) - 0.8) < 0.05); /* it drifted from 0.8, not 0.3 */
 }
 
+/* The host's maximum sizes (20 modes, 128 shape pieces, 6 contacts) stay
+ * within the budget docs/design.md section 1 states: a bs_sim of at most
+ * 6 KB in double and 3 KB in float. */
+static void test_state_fits_its_budget(void **state)
+{
+    (void)state;
+    print_message("sizeof(bs_sim) = %lu B, sizeof(bs_scene) = %lu B (%s)\n", (unsigned long)sizeof(bs_sim),
+                  (unsigned long)sizeof(bs_scene), BS_REAL_NAME);
+    assert_true(sizeof(bs_sim) <= (BS_REAL_FLOAT ? 3072u : 6144u));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -232,6 +243,7 @@ int main(void)
         cmocka_unit_test(test_excitation_phase_is_exact_after_long_runs),
         cmocka_unit_test(test_slow_drift_is_not_lost_to_rounding),
         cmocka_unit_test(test_pcs_kinematics_ignore_the_drifting_x),
+        cmocka_unit_test(test_state_fits_its_budget),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,6 +1,6 @@
 /* bs_port.h (host) - the math the core needs, from the C library's libm.
  *
- * Every port provides exactly these three functions for bs_real. The core
+ * Every port provides exactly these four functions for bs_real. The core
  * includes this header through the port's include path and uses nothing else
  * from the platform.
  */
@@ -14,10 +14,12 @@
 static inline bs_real bs_sqrt(bs_real x) { return sqrtf(x); }
 static inline bs_real bs_sin(bs_real x) { return sinf(x); }
 static inline bs_real bs_cos(bs_real x) { return cosf(x); }
+static inline bs_real bs_fabs(bs_real x) { return fabsf(x); }
 #else
 static inline bs_real bs_sqrt(bs_real x) { return sqrt(x); }
 static inline bs_real bs_sin(bs_real x) { return sin(x); }
 static inline bs_real bs_cos(bs_real x) { return cos(x); }
+static inline bs_real bs_fabs(bs_real x) { return fabs(x); }
 #endif
 
 #endif
