@@ -24,6 +24,11 @@
  * Without friction only the normal row exists; with the rotation locked the
  * beta column does not.
  *
+ * A bottom corner is not evaluated when bounds on the mode shapes prove it open
+ * from the beam under the top corner of its side (certainly_open; the play
+ * leaves one of the two well clear): the same contacts, bit for bit, with
+ * fewer shape evaluations (docs/design.md 5).
+ *
  * Clamp end stops (MODEL.md 9.6): frictionless unilateral contacts on x_C,
  * g = x_C - stop_min (left) and g = stop_max - x_C (right), W = (0, +-1, 0, 0).
  *
@@ -84,12 +89,12 @@ static bs_real gap_sign(const bs_scene *scene, const bs_contact_frame *frame, bs
 }
 
 /* 1 if corner `other` (located, not evaluated) is certainly open, judged from
- * the beam under the evaluated corner p of the same face. The two lie a
- * rotation times the slot height apart, so |w_other - w_p| <= change =
+ * the beam under the evaluated corner p on the same side of the slot. The two
+ * lie |beta| times the slot height apart along the beam, so |w_other - w_p| <= change =
  * sum |q_k| (slope_k |dx| + jump_k) and |w'_other| <= sum |q_k| slope_k
  * (q_slope); if the gap_sign of `other` stays positive by more than its
  * rounding under the worst of these, evaluating it would find it open too:
- * skipping it changes no result. The play keeps one corner of each face at
+ * skipping it changes no result. The play keeps one corner of each side at
  * least about half the play (25 um) open, which is what this finds. */
 static int certainly_open(const bs_scene *scene, const bs_contact_frame *frame, bs_real zeta,
                           const corner_point *p, const corner_point *other,
@@ -218,7 +223,7 @@ void bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
 {
     bs_real cos_beta = BS_R(1.0), sin_beta = BS_R(0.0);
     bs_real q_slope = BS_R(0.0), q_jump = BS_R(0.0);
-    int face, k;
+    int side, k;
 
 #if BS_WITH_ROTATION
     rotation(frame->beta, &cos_beta, &sin_beta);
@@ -230,8 +235,8 @@ void bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
             q_jump += size * frame->shape_bound->jump[k];
         }
     set->count = 0;
-    for (face = 0; face < 2; ++face) { /* P1, P2 (left), then P3, P4 (right) */
-        const int top = face ? 3 : 0, bottom = face ? 2 : 1;
+    for (side = 0; side < 2; ++side) { /* P1, P2 (left), then P3, P4 (right): the order of the set */
+        const int top = side ? 3 : 0, bottom = side ? 2 : 1;
         corner_point at_top, at_bottom;
         int bottom_open;
         locate_corner(scene, frame, top, cos_beta, sin_beta, &at_top);
@@ -241,11 +246,11 @@ void bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
                       && certainly_open(scene, frame, BS_R(-1.0), &at_top, &at_bottom, q_slope, q_jump);
         if (!bottom_open)
             beam_under_corner(scene, frame, &at_bottom);
-        if (face == 0)
+        if (side == 0)
             add_corner(scene, frame, top, &at_top, set, base_term);
         if (!bottom_open)
             add_corner(scene, frame, bottom, &at_bottom, set, base_term);
-        if (face == 1)
+        if (side == 1)
             add_corner(scene, frame, top, &at_top, set, base_term);
     }
     if (frame->stops) {

@@ -195,6 +195,8 @@ for scene in fig6 fig6_1mode; do
     done
 done
 
+share_fig6=$(awk -v insn="$(m4f fig6)" 'BEGIN { printf "%.0f", 100 * insn / 2e-5 / 168e6 }')
+
 # the default solve against plain sweeps (-DBS_WITH_SUBSPACE=0), dt 2e-5 s
 solve_rows=$(awk '{ print ($3 == "none" ? 1e9 : $3), $0 }' "$TMP/solves" | sort -k2,2 -k1,1g -k3,3 |
     awk '{ printf "| %s | %s | %s | %s | %s | %s | %s | %s |\n", $2, $3, $4, $8, $9, $6, $7, $5 }')
@@ -337,9 +339,10 @@ in float. The cap: 1 leaves thousands of steps unconverged (table of all configu
 run-to-run scatter. The step: the time discretisation dominates the error, so a smaller dt
 lowers it (medians above) at proportionally more cost, and from 4e-5 s on the high-branch
 speed is off by 10 % and more. The board: the last column is a mean; the five-mode scene
-at 2e-5 s asks about as many instructions per second as a 168 MHz Cortex-M4F has cycles,
-so on an M4F it does not run in real time, and the worst steps cost several times the
-mean (docs/embedded.md); a 480 MHz Cortex-M7 has the room. The one-mode scene fits an M4F
+at 2e-5 s asks for instructions worth $share_fig6 % of a 168 MHz Cortex-M4F's cycles even
+at one cycle each, an M4F takes more than one cycle for many of them (docs/porting.md) and
+the worst steps cost several times the mean (docs/embedded.md), so on an M4F it does not
+run in real time; a 480 MHz Cortex-M7 has the room. The one-mode scene fits an M4F
 on average, but it is a different model (turning point, docs/validation.md), and its rows
 compare single runs with a single reference run, so their errors carry the whole
 run-to-run scatter.
