@@ -223,7 +223,9 @@ void bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
 {
     bs_real cos_beta = BS_R(1.0), sin_beta = BS_R(0.0);
     bs_real q_slope = BS_R(0.0), q_jump = BS_R(0.0);
-    int side, k;
+    corner_point at[BS_CORNERS];
+    int open[BS_CORNERS] = { 0, 0, 0, 0 }; /* 1: skipped, certainly open */
+    int corner, side, k;
 
 #if BS_WITH_ROTATION
     rotation(frame->beta, &cos_beta, &sin_beta);
@@ -235,24 +237,21 @@ void bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
             q_jump += size * frame->shape_bound->jump[k];
         }
     set->count = 0;
-    for (side = 0; side < 2; ++side) { /* P1, P2 (left), then P3, P4 (right): the order of the set */
+    for (corner = 0; corner < BS_CORNERS; ++corner)
+        locate_corner(scene, frame, corner, cos_beta, sin_beta, &at[corner]);
+    /* the two top corners back to back: independent Horner chains the processor overlaps */
+    beam_under_corner(scene, frame, &at[0]);
+    beam_under_corner(scene, frame, &at[3]);
+    for (side = 0; side < 2; ++side) { /* P2 judged from P1, P3 from P4 */
         const int top = side ? 3 : 0, bottom = side ? 2 : 1;
-        corner_point at_top, at_bottom;
-        int bottom_open;
-        locate_corner(scene, frame, top, cos_beta, sin_beta, &at_top);
-        beam_under_corner(scene, frame, &at_top);
-        locate_corner(scene, frame, bottom, cos_beta, sin_beta, &at_bottom);
-        bottom_open = frame->shape_bound
-                      && certainly_open(scene, frame, BS_R(-1.0), &at_top, &at_bottom, q_slope, q_jump);
-        if (!bottom_open)
-            beam_under_corner(scene, frame, &at_bottom);
-        if (side == 0)
-            add_corner(scene, frame, top, &at_top, set, base_term);
-        if (!bottom_open)
-            add_corner(scene, frame, bottom, &at_bottom, set, base_term);
-        if (side == 1)
-            add_corner(scene, frame, top, &at_top, set, base_term);
+        open[bottom] = frame->shape_bound
+                       && certainly_open(scene, frame, BS_R(-1.0), &at[top], &at[bottom], q_slope, q_jump);
+        if (!open[bottom])
+            beam_under_corner(scene, frame, &at[bottom]);
     }
+    for (corner = 0; corner < BS_CORNERS; ++corner)
+        if (!open[corner])
+            add_corner(scene, frame, corner, &at[corner], set, base_term);
     if (frame->stops) {
         if (frame->x_stops < scene->stop_min)
             add_stop(scene, BS_STOP_LEFT, BS_R(1.0), set, base_term);
