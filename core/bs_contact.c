@@ -224,7 +224,7 @@ void bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
     bs_real cos_beta = BS_R(1.0), sin_beta = BS_R(0.0);
     bs_real q_slope = BS_R(0.0), q_jump = BS_R(0.0);
     corner_point at[BS_CORNERS];
-    int open[BS_CORNERS] = { 0, 0, 0, 0 }; /* 1: skipped, certainly open */
+    int open[BS_CORNERS];              /* 1: skipped, certainly open */
     int corner, side, k;
 
 #if BS_WITH_ROTATION
@@ -244,6 +244,7 @@ void bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
     beam_under_corner(scene, frame, &at[3]);
     for (side = 0; side < 2; ++side) { /* P2 judged from P1, P3 from P4 */
         const int top = side ? 3 : 0, bottom = side ? 2 : 1;
+        open[top] = 0;
         open[bottom] = frame->shape_bound
                        && certainly_open(scene, frame, BS_R(-1.0), &at[top], &at[bottom], q_slope, q_jump);
         if (!open[bottom])
