@@ -79,23 +79,16 @@ static void beam_under_corner(const bs_scene *scene, const bs_contact_frame *fra
     bs_shape_deflection(scene, p->x, frame->q_beam, p->phi, p->slope, &p->w, &p->w_slope);
 }
 
-/* zeta d_z - h/2 w'^2, the sign of g_N: active when < 0. */
-static bs_real gap_sign(const bs_scene *scene, const bs_contact_frame *frame, bs_real zeta,
-                        const corner_point *p)
-{
-    const bs_real hh = scene->half_thickness;
-    const bs_real d_z = p->z - frame->base.displacement - p->w - zeta * hh;
-    return zeta * d_z - hh * p->w_slope * p->w_slope;
-}
-
 /* 1 if corner `other` (located, not evaluated) is certainly open, judged from
  * the beam under the evaluated corner p on the same side of the slot. The two
- * lie |beta| times the slot height apart along the beam, so |w_other - w_p| <= change =
- * sum |q_k| (slope_k |dx| + jump_k) and |w'_other| <= sum |q_k| slope_k
- * (q_slope); if the gap_sign of `other` stays positive by more than its
- * rounding under the worst of these, evaluating it would find it open too:
- * skipping it changes no result. The play keeps one corner of each side at
- * least about half the play (25 um) open, which is what this finds. */
+ * lie |beta| times the slot height apart along the beam, so
+ *   |w_other - w_p| <= change = sum |q_k| (slope_k |dx| + jump_k),
+ *   |w'_other| <= q_slope = sum |q_k| slope_k.
+ * If zeta d_z - h/2 w'^2 of `other` (the sign of its g_N, see add_corner)
+ * stays positive under the worst of these by more than its rounding,
+ * evaluating it would find it open too: skipping it changes no result. The
+ * play keeps one corner of each side at least about half the play (25 um)
+ * open, which is what this finds. */
 static int certainly_open(const bs_scene *scene, const bs_contact_frame *frame, bs_real zeta,
                           const corner_point *p, const corner_point *other,
                           bs_real q_slope, bs_real q_jump)
@@ -130,10 +123,10 @@ static void add_corner(const bs_scene *scene, const bs_contact_frame *frame, int
     int a;
     int k;
 
-    if (!(gap_sign(scene, frame, zeta, p) < BS_R(0.0)))
-        return;
     d_x = zeta * hh * w_slope;
     d_z = p->z - frame->base.displacement - p->w - zeta * hh;
+    if (!(zeta * d_z - hh * w_slope * w_slope < BS_R(0.0)))
+        return;
     cos_alpha = BS_R(1.0) / bs_sqrt(BS_R(1.0) + w_slope * w_slope);
     sin_alpha = w_slope * cos_alpha;
     n_x = -zeta * sin_alpha;
@@ -287,15 +280,16 @@ void bs_contact_free_velocity(const bs_scene *scene, bs_contact_set *set,
 {
     int a, r;
 
+#if !BS_WITH_RESTITUTION
+    (void)u_beam_before;
+    (void)u_slider_before;
+#endif
     for (a = 0; a < set->count; ++a)
         for (r = 0; r < BS_ROWS; ++r) {
             bs_real v = row_velocity(scene, set, a, r, u_beam, u_slider, base_term);
 #if BS_WITH_RESTITUTION
             if (r == 0)
                 v += scene->e_n * row_velocity(scene, set, a, 0, u_beam_before, u_slider_before, base_term);
-#else
-            (void)u_beam_before;
-            (void)u_slider_before;
 #endif
             set->free_velocity[BS_ROWS * a + r] = v;
         }

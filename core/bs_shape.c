@@ -16,8 +16,8 @@
 
 /* phi, slope and, when q is not NULL, w = sum phi_k q_k and w' = sum phi_k' q_k
  * accumulated in the same loop (no second pass over phi and slope). */
-static inline void evaluate(const bs_scene *scene, bs_real x, const bs_real *q, bs_real *phi, bs_real *slope,
-                     bs_real *w, bs_real *w_slope)
+static inline void evaluate(const bs_scene *scene, bs_real x, const bs_real *q, bs_real *phi,
+                            bs_real *slope, bs_real *w, bs_real *w_slope)
 {
     const int n = BS_NMODES(scene);
     const bs_real scale = scene->shape_scale;
