@@ -264,8 +264,8 @@ static void test_skipping_open_corners_detects_the_same_contacts(void **state)
     check_detection_with_and_without_skipping("configs/fig6.ini", 3e-3);
 }
 
-/* Whole runs: the same scene with the skip disabled (bounds too large to ever
- * rule a corner out) ends in the same state hash. */
+/* Whole runs: the same scene with the skip disabled (a jump bound of 1e30
+ * rules no corner out once the beam has moved) ends in the same state hash. */
 static void check_run_with_and_without_skipping(const char *path, int steps)
 {
     static bs_sim plain;
