@@ -19,6 +19,11 @@
 #           the scene from its start (settling, impacts, contact with one or
 #           two corners); phase "tight": the worst case, all four corners and
 #           the clamp stop in contact every step.
+#   where the instructions go (Cortex-M4F float, fig6 and fig6_1mode): each
+#           phase is run once more with a per-address profile (count.sh with
+#           CM_PROFILE) and split per function (port/cortex-m/profile.sh);
+#           the script stops if the profile's worst step differs from the
+#           count above.
 set -eu
 OUT=${OUT:-docs/embedded.md}
 TMP=$(mktemp -d)
@@ -85,7 +90,53 @@ for spec in "$@"; do
     rows="$rows| $scene | $target | $real | $solve | $code | $((ro + scene_bytes)) | $sim_bytes | $stack | $steps | $mean | $worst ($contacts) | $tight_mean | $tight_worst ($tight_contacts) |
 "
     echo "$target $scene $real $mean $worst $tight_worst $solve" >> "$TMP/summary"
+    # Cortex-M4F float, the scenes with targets: where the worst step of each phase goes
+    if [ "$target" = cortex-m4f ] && [ "$real" = float ] && { [ "$scene" = fig6 ] || [ "$scene" = fig6_1mode ]; }; then
+        for phase in scene tight; do
+            if [ "$phase" = scene ]; then range="first=1,last=$steps" counted=$worst
+            else range="first=$((steps + 1))" counted=$tight_worst; fi
+            CM_PROFILE="profile=$TMP/profile,$range" sh port/cortex-m/count.sh "$elf" "$target" 600 \
+                > "$TMP/out" || { echo "embedded_report: profiling $elf failed" >&2; exit 1; }
+            sh port/cortex-m/profile.sh "$TMP/profile" "$elf" > "$TMP/functions"
+            # the profile must see the same worst step as the count above
+            set -- $(head -n 1 "$TMP/functions")
+            [ "${5:-}" = "$counted" ] || {
+                echo "embedded_report: $elf $phase: profile's worst step ${5:-?} != counted $counted" >&2
+                exit 1
+            }
+            awk -v column="$solve $phase" 'NR > 1 { print $1, column, $3 }' "$TMP/functions" \
+                >> "$TMP/by_function-$scene"
+        done
+    fi
 done
+
+# by_function_table SCENE -> markdown rows: instructions per function in the worst step of
+# each phase and solve, costliest in the sweeps build's tight phase first, then the total
+by_function_table() {
+    awk '
+        { count[$1 SUBSEP $2 " " $3] = $4; seen[$1] = 1; total[$2 " " $3] += $4 }
+        END {
+            split("subspace scene,subspace tight,sweeps scene,sweeps tight", column, ",")
+            for (f in seen) {
+                line = "| `" f "` |"
+                for (c = 1; c <= 4; ++c) line = line " " (count[f SUBSEP column[c]] + 0) " |"
+                printf "%012d %s\n", count[f SUBSEP "sweeps tight"] + 0, line
+            }
+            line = "| **the step** |"
+            for (c = 1; c <= 4; ++c) line = line " **" total[column[c]] "** |"
+            printf "%012d %s\n", -1, line
+        }' "$TMP/by_function-$1" | sort -r | cut -d' ' -f2-
+}
+
+# outside_solve SCENE -> "kinematics step" instructions of the sweeps build's worst tight step
+# outside the contact solve: finding the corners and the beam under them, and the smooth step
+outside_solve() {
+    awk '
+        $2 " " $3 == "sweeps tight" && ($1 == "bs_contact_detect" || $1 == "bs_shape_deflection") { k += $4 }
+        $2 " " $3 == "sweeps tight" && ($1 == "bs_sim_step" || $1 == "bs_beam_force" || $1 ~ /^bs_excitation_/) { s += $4 }
+        $2 " " $3 == "sweeps tight" { t += $4 }
+        END { printf "%d %d %d\n", k, s, t }' "$TMP/by_function-$1"
+}
 
 # Real-time margins on the M4F (168 MHz) and M7 (480 MHz) at dt = 2e-5 s:
 # the cycle budget per step over the worst instruction count of any phase.
@@ -101,6 +152,28 @@ targets=$(awk '
         limit = $2 == "fig6_1mode" ? 1500 : 6000
         printf "| %s | %s | %d | %d | %d | %s |\n", $2, $7, $5, $6, limit, worst <= limit ? "yes" : "**no**"
     }' "$TMP/summary")
+
+# The targets' verdict in numbers: the sweeps build's worst tight step, split
+breakdown=""
+for scene in fig6_1mode fig6; do
+    [ -f "$TMP/by_function-$scene" ] || continue
+    limit=$([ "$scene" = fig6_1mode ] && echo 1500 || echo 6000)
+    set -- $(outside_solve "$scene")
+    breakdown="$breakdown
+### $scene
+
+| function | subspace: worst scene step | subspace: worst tight step | sweeps: worst scene step | sweeps: worst tight step |
+|---|---|---|---|---|
+$(by_function_table "$scene")
+
+In the sweeps build's worst tight step ($3 instructions; target $limit), finding the contacts
+(\`bs_contact_detect\`, \`bs_shape_deflection\`: corner positions, the beam under each
+corner, gaps, force directions) takes $1 and the smooth part of the step (\`bs_sim_step\`,
+\`bs_beam_force\`, \`bs_excitation_*\`) $2, together $(($1 + $2)) ($(awk -v a=$(($1 + $2)) -v b=$limit 'BEGIN { printf "%.0f", 100 * a / b }') % of the target);
+the contact solve and its set-up (Delassus matrix, two sweeps, the residual, the update of
+the velocities) the remaining $(($3 - $1 - $2)).
+"
+done
 
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 cat > "$OUT" <<EOF
@@ -139,6 +212,13 @@ accuracy: docs/accuracy.md, "Without the subspace step").
 |---|---|---|---|---|---|
 $targets
 
+## Where the instructions go (Cortex-M4F, float)
+
+Instructions executed in each function during the worst step of each phase, for the default
+core ("subspace") and the sweeps build (port/cortex-m/profile.sh on a profile from the same
+QEMU plugin; code inlined into a function counts there). The last row is the whole step; the
+script checks that it equals the worst count of the tables above.
+$breakdown
 ## Real-time margin at dt = 2e-5 s
 
 Cycle budget per step (clock x dt) over the worst instruction count; above 1 means the

@@ -12,7 +12,9 @@
 # Exit status: as run.sh (the guest's status, 99 fault, 124 timeout, 2 usage), or 125 if the
 # plugin cannot be built (build-plugin.sh prints why). Without bs_board_mark in the image only
 # the total is printed. Env: CM_BUILD (where libinsncount.so is; default <repo>/build/cm),
-# CM_NM (default arm-none-eabi-nm), and those of run.sh.
+# CM_NM (default arm-none-eabi-nm), CM_PROFILE (more plugin arguments, e.g.
+# profile=FILE,first=K,last=L for a per-address profile of brackets K..L: see
+# insn-plugin/insncount.c and profile.sh), and those of run.sh.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 if [ $# -lt 2 ] || [ $# -gt 3 ]; then echo "usage: $0 ELF TARGET [TIMEOUT_S]" >&2; exit 2; fi
@@ -26,8 +28,9 @@ CM_BUILD=$(cd "$CM_BUILD" && pwd)
 plugin=$CM_BUILD/libinsncount.so
 mark=$("${CM_NM:-arm-none-eabi-nm}" "$elf" | awk '$3 == "bs_board_mark" { print $1; exit }')
 if [ -n "$mark" ]; then
-    plugin=$plugin,mark=0x$mark
+    plugin=$plugin,mark=0x$mark${CM_PROFILE:+,$CM_PROFILE}
 else
+    [ -z "${CM_PROFILE:-}" ] || { echo "count.sh: CM_PROFILE needs bs_board_mark in $elf" >&2; exit 2; }
     echo "count.sh: no bs_board_mark in $elf: only the total is counted" >&2
 fi
 # The plugin prints on stderr; merging keeps its lines in order with the guest's output (both

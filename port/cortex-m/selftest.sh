@@ -8,7 +8,8 @@
 # from selftest.su) for the nested calls; the fault variant exits 99 with "*** CPU fault"; the
 # hang variant is stopped with status 124 within its 2 s limit. Also: an M4F image on the
 # FPU-less AN385 faults inside startup, before newlib's semihosting set-up, and must still exit
-# 99 (not 0); two counted runs give identical counts.
+# 99 (not 0); two counted runs give identical counts; a profile of two brackets sums to their
+# counts and puts the loop's instructions in its function.
 # If the counting plugin cannot be built (no network for the header), the count checks are
 # skipped with a notice and the rest still runs. Exit status: 0 all passed, 1 otherwise.
 # Env: MAKE (default make), CM_BUILD (default build/cm).
@@ -115,6 +116,22 @@ if [ -n "$counting" ]; then
     has "$CM_BUILD/cortex-m4f/selftest.out" "selftest done" &&
         cmp -s "$CM_BUILD/cortex-m4f/selftest.out" "$CM_BUILD/cortex-m4f/selftest.out2"
     check "counts deterministic (two cortex-m4f runs identical)" "$?" -eq 0
+    # The profile mode attributes exactly the bracketed instructions: brackets 2 and 3 are
+    # mul_add n=0 and n=1000; the loop itself is in selftest_mul_add.
+    prof=$CM_BUILD/cortex-m4f/selftest.profile
+    rm -f "$prof"
+    CM_PROFILE="profile=$prof,first=2,last=3" sh "$here/count.sh" "$CM_BUILD/cortex-m4f/selftest.elf" \
+        cortex-m4f 30 >"$CM_BUILD/cortex-m4f/selftest.out3" 2>&1
+    n0=$(count_of "$CM_BUILD/cortex-m4f/selftest.out" "bracket mul_add n=0")
+    n1000=$(count_of "$CM_BUILD/cortex-m4f/selftest.out" "bracket mul_add n=1000")
+    first=$(head -n 1 "$prof" 2>/dev/null)
+    sum=$(awk 'NR > 1 { sum += $2 } END { print sum + 0 }' "$prof" 2>/dev/null)
+    check "profile of brackets 2-3: '$first', sum ${sum:-?} = $n0 + $n1000" \
+        "$first" = "brackets 2 worst 3 $n1000" -a "${sum:-0}" -eq $((${n0:-0} + ${n1000:-0}))
+    loop=$(sh "$here/profile.sh" "$prof" "$CM_BUILD/cortex-m4f/selftest.elf" 2>/dev/null |
+           awk '$1 == "selftest_mul_add" { print $3 }')
+    check "profile: selftest_mul_add ${loop:-?} instructions in bracket 3 (expect 5000..5010)" \
+        "${loop:-0}" -ge 5000 -a "${loop:-0}" -le 5010
 fi
 
 note=

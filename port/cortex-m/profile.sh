@@ -1,0 +1,39 @@
+#!/bin/sh
+# profile.sh PROFILE ELF - per-function instruction counts from a count.sh profile.
+#
+# PROFILE is the file the counting plugin writes with CM_PROFILE=profile=PROFILE[,first=K,last=L]
+# (insn-plugin/insncount.c); ELF the image it profiled. Prints
+#     brackets N worst B W          as the profile's first line (N brackets, the costliest B: W)
+#     FUNCTION TOTAL WORST          one line per function, costliest in bracket B first
+# TOTAL = instructions in the function's own code over the N brackets, WORST = in bracket B.
+# Inlined code counts in the function it was inlined into; addresses in no sized symbol
+# (veneers, padding) count as "(unknown)", outside the code region as "(outside)".
+set -eu
+[ $# -eq 2 ] || { echo "usage: $0 PROFILE ELF" >&2; exit 2; }
+[ -f "$1" ] || { echo "profile.sh: no such profile: $1" >&2; exit 2; }
+[ -f "$2" ] || { echo "profile.sh: no such image: $2" >&2; exit 2; }
+symbols=$(mktemp)
+trap 'rm -f "$symbols"' EXIT
+# function symbols with a size: "ADDRESS SIZE NAME", by address
+"${CM_NM:-arm-none-eabi-nm}" -n -S "$2" | awk 'NF == 4 && $3 ~ /^[tTwW]$/ { print $1, $2, $4 }' > "$symbols"
+head -n 1 "$1"
+awk '
+    function hex(text,    i, value) { # mawk has no strtonum
+        value = 0
+        for (i = 1; i <= length(text); ++i)
+            value = value * 16 + index("0123456789abcdef", tolower(substr(text, i, 1))) - 1
+        return value
+    }
+    NR == FNR { start[NR] = hex($1); stop[NR] = start[NR] + hex($2); name[NR] = $3; n = NR; next }
+    FNR == 1 { next }
+    {
+        address = hex($1); function_name = "(unknown)"
+        if ($1 == "ffffffff") function_name = "(outside)"
+        else {
+            low = 1; high = n # last symbol starting at or below address
+            while (low < high) { mid = int((low + high + 1) / 2); if (start[mid] <= address) low = mid; else high = mid - 1 }
+            if (n && start[low] <= address && address < stop[low]) function_name = name[low]
+        }
+        total[function_name] += $2; worst[function_name] += $3
+    }
+    END { for (f in total) printf "%s %.0f %.0f\n", f, total[f], worst[f] }' "$symbols" "$1" | sort -k3,3nr -k2,2nr
