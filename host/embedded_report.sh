@@ -128,14 +128,16 @@ by_function_table() {
         }' "$TMP/by_function-$1" | sort -r | cut -d' ' -f2-
 }
 
-# outside_solve SCENE -> "kinematics step" instructions of the sweeps build's worst tight step
-# outside the contact solve: finding the corners and the beam under them, and the smooth step
+# outside_solve SCENE -> "FIND SMOOTH STEP": of the sweeps build's worst tight step, the
+# instructions that find the contacts (corners, the beam under them), those of the smooth
+# part of the step, and the whole step
 outside_solve() {
     awk '
-        $2 " " $3 == "sweeps tight" && ($1 == "bs_contact_detect" || $1 == "bs_shape_deflection") { k += $4 }
-        $2 " " $3 == "sweeps tight" && ($1 == "bs_sim_step" || $1 == "bs_beam_force" || $1 ~ /^bs_excitation_/) { s += $4 }
-        $2 " " $3 == "sweeps tight" { t += $4 }
-        END { printf "%d %d %d\n", k, s, t }' "$TMP/by_function-$1"
+        $2 " " $3 != "sweeps tight" { next }
+        $1 == "bs_contact_detect" || $1 == "bs_shape_deflection" { find += $4 }
+        $1 == "bs_sim_step" || $1 == "bs_beam_force" || $1 ~ /^bs_excitation_/ { smooth += $4 }
+        { step += $4 }
+        END { printf "%d %d %d\n", find, smooth, step }' "$TMP/by_function-$1"
 }
 
 # Real-time margins on the M4F (168 MHz) and M7 (480 MHz) at dt = 2e-5 s:

@@ -35,7 +35,7 @@ QEMU_PLUGIN_EXPORT int qemu_plugin_version = QEMU_PLUGIN_VERSION;
 static uint64_t insn_count;          /* instructions executed so far */
 static uint64_t count_at_mark;       /* insn_count at the previous mark */
 static uint64_t mark_vaddr = UINT64_MAX;
-static uint64_t marks;               /* marks passed so far */
+static uint64_t marks;               /* marks passed so far (kept for the profile) */
 
 /* Profile (optional): counts per code address, indexed by address / 2 (Thumb). */
 #define CODE_SLOTS ((4u << 20) / 2)
