@@ -65,11 +65,6 @@
 
 enum { MODE_TAKEOFF, MODE_STICK, MODE_SLIP_POS, MODE_SLIP_NEG }; /* slip +: xi_T > 0, P_T = -mu P_N */
 
-static bs_real magnitude(bs_real value)
-{
-    return bs_fabs(value);
-}
-
 /* xi of contact a's rows with the current P. */
 static void velocity(const bs_contact_set *set, int a, bs_real *xi)
 {
@@ -185,7 +180,7 @@ static bs_real residual_of(const bs_contact_set *set, const bs_real *step, const
         bs_real projected[ROWS];
         prox(set, a, step[a], &xi[ROWS * a], p, projected);
         for (r = 0; r < ROWS; ++r)
-            sum += magnitude(p[r] - projected[r]);
+            sum += bs_fabs(p[r] - projected[r]);
     }
     return sum;
 }
@@ -219,7 +214,7 @@ static bs_real percussion_scale(const bs_contact_set *set, const bs_real *step)
     int a, r;
     for (a = 0; a < set->count; ++a)
         for (r = 0; r < ROWS; ++r)
-            scale += step[a] * magnitude(set->free_velocity[ROWS * a + r]);
+            scale += step[a] * bs_fabs(set->free_velocity[ROWS * a + r]);
     return scale;
 }
 
@@ -289,11 +284,11 @@ static void subspace_solve(bs_contact_set *set, const int *mode, bs_real *trial)
         bs_real size = BS_R(0.0);
         int pivot = rank;
         for (i = 0; i < rows; ++i)
-            size += magnitude(m[i][col]);
+            size += bs_fabs(m[i][col]);
         for (i = rank + 1; i < rows; ++i)
-            if (magnitude(m[i][col]) > magnitude(m[pivot][col]))
+            if (bs_fabs(m[i][col]) > bs_fabs(m[pivot][col]))
                 pivot = i;
-        if (!(magnitude(m[pivot][col]) > BS_R(16.0) * BS_REAL_EPS * size))
+        if (!(bs_fabs(m[pivot][col]) > BS_R(16.0) * BS_REAL_EPS * size))
             continue; /* dependent column: its unknown stays 0 */
         if (pivot != rank)
             for (j = col; j <= rows; ++j) {
