@@ -15,8 +15,11 @@
  * of the scene whose slot is pushed 2 um into the beam, started at the left
  * clamp stop, so that all four corners and the stop are in contact at once
  * (the contact solve's worst case; bs_scene_check rightly refuses such an
- * interference fit for a real scene, so the copy is changed after init). The
- * stack is painted before and measured after each phase.
+ * interference fit for a real scene, so the copy is changed after init); it
+ * runs BS_RUN_TIGHT_STEPS steps, a quarter of BS_RUN_STEPS unless set (0
+ * leaves it out: -DBS_RUN_STEPS=BS_SCENE_STEPS -DBS_RUN_TIGHT_STEPS=0 counts
+ * the scene's whole run and nothing else). The stack is painted before and
+ * measured after each phase.
  */
 #include <stdio.h>
 #include <string.h>
@@ -32,6 +35,9 @@
 #endif
 #ifndef BS_RUN_COST
 #define BS_RUN_COST 0
+#endif
+#ifndef BS_RUN_TIGHT_STEPS
+#define BS_RUN_TIGHT_STEPS (BS_RUN_STEPS / 4)
 #endif
 
 static bs_sim sim;
@@ -134,12 +140,14 @@ int main(void)
         stack = bs_board_stack_used();
     failed = report("scene", result, stack);
 #if BS_RUN_COST
+    if (BS_RUN_TIGHT_STEPS == 0)
+        return failed;
     if (prepare_tight() != 0) {
         printf("tight: init refused\n");
         return 1;
     }
     bs_board_stack_paint();
-    result = run(BS_RUN_STEPS / 4, "tight");
+    result = run(BS_RUN_TIGHT_STEPS, "tight");
     stack = bs_board_stack_used();
     failed |= report("tight", result, stack);
 #endif
