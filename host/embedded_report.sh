@@ -21,9 +21,8 @@
 #           the scene from its start (settling, impacts, contact with one or
 #           two corners); phase "tight": the worst case, all four corners and
 #           the clamp stop in contact every step; "whole run": every step of
-#           the scene from t = 0 to t_end (60 s of fig6: 3e6 steps), counted
-#           two images at a time and summarised as they run (a count per
-#           step would be tens of MB per image)
+#           the scene from t = 0 to t_end (60 s of fig6: 3e6 steps), two
+#           images at a time
 #   where the instructions go (Cortex-M4F float, fig6 and fig6_1mode): each
 #           phase is run once more with a per-address profile (count.sh with
 #           CM_PROFILE) and split per function (port/cortex-m/profile.sh);
@@ -59,14 +58,25 @@ core_sizes() {
         END { printf "%d %d %d %d\n", code, ro, scene, sim }' "$1"
 }
 
-# step_counts OUTPUT PHASE -> "steps mean worst" from count.sh's output
+# step_counts OUTPUT PHASE [BUDGET] -> "steps mean worst over" from count.sh's output
+# (over: steps above BUDGET instructions)
 step_counts() {
-    awk -v phase="$2" '
+    awk -v phase="$2" -v budget="${3:-0}" '
         $0 ~ "^" phase ": end" { inside = 0 }
-        inside && /^\[insn\] [0-9]+$/ { if (++marks % 2 == 0) { n++; sum += $2; if ($2 > worst) worst = $2 } }
+        inside && /^\[insn\] [0-9]+$/ {
+            if (++marks % 2 == 0) { n++; sum += $2; if ($2 > worst) worst = $2; if ($2 > budget) over++ }
+        }
         $0 ~ "^scene " && phase == "scene" { inside = 1 }
         $0 ~ "^scene: end" && phase == "tight" { inside = 1; marks = 0 }
-        END { if (n) printf "%d %.0f %d\n", n, sum / n, worst; else print "0 0 0" }' "$1"
+        END { if (n) printf "%d %.0f %d %d\n", n, sum / n, worst, over; else print "0 0 0 0" }' "$1"
+}
+
+# qemu_failed WHAT OUTPUT: says that WHAT failed, with the image's last lines other than
+# counts, and stops
+qemu_failed() {
+    echo "embedded_report: $1 failed under QEMU:" >&2
+    grep -v '^\[insn\]' "$2" | tail -n 5 >&2
+    exit 1
 }
 
 # Cycles per step at dt = 2e-5 s on the boards of the real-time targets: a 168 MHz M4F
@@ -77,34 +87,16 @@ budget() { # TARGET
     case $1 in cortex-m4f) echo $M4F_BUDGET ;; cortex-m7) echo $M7_BUDGET ;; *) echo 0 ;; esac
 }
 
-# whole_run TARGET ELF BUDGET > SUMMARY: counts the image's only phase and prints
-# "status steps mean worst contacts over" (over: steps above BUDGET instructions), then
-# the image's last lines other than counts if it failed
-whole_run() {
-    { status=0; sh port/cortex-m/count.sh "$2" "$1" 3600 || status=$?; echo "count-status $status"; } | awk -v budget="$3" '
-        /^\[insn\] [0-9]+$/ {
-            if (inside && ++marks % 2 == 0) { n++; sum += $2; if ($2 > worst) worst = $2; if ($2 > budget) over++ }
-            next
-        }
-        /^scene / { inside = 1 }
-        /^scene: end / { inside = 0; for (i = 1; i < NF; ++i) if ($i == "most-contacts") contacts = $(i + 1) }
-        /^count-status / { status = $2; next }
-        { last[++lines % 5] = $0 }
-        END {
-            printf "%d %d %.0f %d %d %d\n", status, n, n ? sum / n : 0, worst, contacts, over
-            if (status != 0) for (i = lines - 4; i <= lines; ++i) if (i > 0) print last[i % 5]
-        }'
-}
-
-# the whole runs first, two at a time (QEMU runs one image per host thread)
+# the whole runs first, two at a time (QEMU runs one image per host thread); each
+# output is ~80 MB of counts, deleted once summarised
 whole=0
 for spec in $specs; do
     case $spec in *-whole:*) ;; *) continue ;; esac
-    target=$(echo "$spec" | cut -d: -f1)
-    elf=$(echo "$spec" | cut -d: -f5)
     whole=$((whole + 1))
     echo "embedded_report: $spec: whole run" >&2
-    whole_run "$target" "$elf" "$(budget "$target")" > "$TMP/whole-$whole" &
+    { status=0
+      sh port/cortex-m/count.sh "$(echo "$spec" | cut -d: -f5)" "${spec%%:*}" 3600 > "$TMP/whole-$whole" || status=$?
+      echo $status > "$TMP/whole-$whole.status"; } &
     [ $((whole % 2)) -ne 0 ] || wait
 done
 wait
@@ -112,14 +104,15 @@ whole=0
 for spec in $specs; do
     case $spec in *-whole:*) ;; *) continue ;; esac
     whole=$((whole + 1))
-    set -- $(head -n 1 "$TMP/whole-$whole")
-    [ "$1" -eq 0 ] && [ "$2" -gt 0 ] || {
-        echo "embedded_report: $spec: the whole run failed under QEMU (status $1):" >&2
-        tail -n +2 "$TMP/whole-$whole" >&2
-        exit 1
-    }
-    echo "$spec" | awk -F: -v counts="$2 $3 $4 $5 $6" -v budget="$(budget "${spec%%:*}")" \
-        '{ sub(/-whole$/, "", $4); print $1, $2, $3, $4, counts, budget }' >> "$TMP/whole_summary"
+    out=$TMP/whole-$whole
+    status=$(cat "$out.status")
+    [ "$status" -eq 0 ] || qemu_failed "the whole run of $spec (status $status)" "$out"
+    budget=$(budget "${spec%%:*}")
+    set -- $(step_counts "$out" scene "$budget")
+    contacts=$(sed -n 's/^scene: end .* most-contacts \([0-9]*\).*/\1/p' "$out")
+    echo "$spec" | awk -F: -v counts="$1 $2 $3 $contacts $4 $budget" \
+        '{ sub(/-whole$/, "", $4); print $1, $2, $3, $4, counts }' >> "$TMP/whole_summary"
+    rm -f "$out"
 done
 
 rows=""
@@ -131,11 +124,7 @@ for spec in $specs; do
     solve=$(echo "$spec" | cut -d: -f4)
     elf=$(echo "$spec" | cut -d: -f5)
     echo "embedded_report: $target $scene $real $solve" >&2
-    sh port/cortex-m/count.sh "$elf" "$target" 600 > "$TMP/out" || {
-        echo "embedded_report: $elf failed under QEMU:" >&2
-        grep -v '^\[insn\]' "$TMP/out" | tail -n 5 >&2
-        exit 1
-    }
+    sh port/cortex-m/count.sh "$elf" "$target" 600 > "$TMP/out" || qemu_failed "$elf" "$TMP/out"
     set -- $(core_sizes "${elf%.elf}.map")
     code=$1 ro=$2 scene_bytes=$3 sim_bytes=$4
     set -- $(step_counts "$TMP/out" scene)
