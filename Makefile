@@ -118,6 +118,9 @@ EMB_SWEEPS_SCENES := fig6 fig6_1mode
 # ... and the scenes' whole runs (t_end / dt steps, no tight phase), both solves,
 # TARGET:SCENE for the boards of the real-time targets
 EMB_WHOLE := cortex-m4f:fig6 cortex-m4f:fig6_1mode cortex-m7:fig6
+# ... and the M4F float images of these scenes at -O2 instead of CM_OPT's -O3 (a later
+# -O wins), both solves: what the optimisation level buys and costs
+EMB_O2_SCENES := fig6 fig6_1mode
 emb_steps = $(if $(filter cortex-m3 cortex-m0plus,$1),2000,20000)
 
 emb_word = $(word $2,$(subst :, ,$1))
@@ -130,6 +133,8 @@ $(foreach s,$(EMB_SWEEPS_SCENES),$(foreach t,$(EMB_SWEEPS_TARGETS),$(call cm_ima
 $(foreach w,$(EMB_WHOLE),$(foreach v,subspace:1 sweeps:0,$(call cm_image,whole-$(call emb_word,$w,2)-float-$(call emb_word,$v,1),\
     $(call emb_word,$w,1),$(EMB_SRC),$(call emb_flags,$(call emb_word,$w,2),float,BS_SCENE_STEPS,\
     -DBS_RUN_COST=1 -DBS_RUN_TIGHT_STEPS=0 -DBS_WITH_SUBSPACE=$(call emb_word,$v,2)))))
+$(foreach s,$(EMB_O2_SCENES),$(foreach v,subspace:1 sweeps:0,$(call cm_image,cost-$s-float-$(call emb_word,$v,1)-O2,\
+    cortex-m4f,$(EMB_SRC),$(call emb_flags,$s,float,20000,-DBS_RUN_COST=1 -DBS_WITH_SUBSPACE=$(call emb_word,$v,2) -O2))))
 
 # The host twin of a check image: build/embhost/check-SCENE-REAL-STEPS
 EMB_HOST := $(BUILD)/embhost
@@ -148,15 +153,17 @@ embedded-test: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_CHECK_PAIRS),$(call emb_wor
 	$(if $(CM_TOOLS_OK),@set -e; $(foreach c,$(EMB_CHECKS),NM=arm-none-eabi-nm sh tests/check_core_symbols.sh \
 	    $(call emb_word,$c,3) $(CM_BUILD)/$(call emb_word,$c,1)/check-$(call emb_word,$c,2)-$(call emb_word,$c,3).obj/core/*.o;))
 
-# report arguments TARGET:SCENE:REAL:SOLVE:ELF (whole runs: SOLVE is subspace-whole or sweeps-whole)
+# report arguments TARGET:SCENE:REAL:SOLVE:ELF (whole runs: SOLVE is subspace-whole or
+# sweeps-whole; -O2 images: subspace-O2 or sweeps-O2)
 EMB_COST_SPECS := $(foreach s,$(EMB_COST_SCENES),$(foreach t,$(EMB_COST_TARGETS),\
     $(call emb_word,$t,1):$s:$(call emb_word,$t,2):subspace:$(call cm_elf,cost-$s-$(call emb_word,$t,2),$(call emb_word,$t,1)))) \
     $(foreach s,$(EMB_SWEEPS_SCENES),$(foreach t,$(EMB_SWEEPS_TARGETS),\
     $(call emb_word,$t,1):$s:$(call emb_word,$t,2):sweeps:$(call cm_elf,cost-$s-$(call emb_word,$t,2)-sweeps,$(call emb_word,$t,1)))) \
     $(foreach w,$(EMB_WHOLE),$(foreach v,subspace sweeps,\
-    $(call emb_word,$w,1):$(call emb_word,$w,2):float:$v-whole:$(call cm_elf,whole-$(call emb_word,$w,2)-float-$v,$(call emb_word,$w,1))))
+    $(call emb_word,$w,1):$(call emb_word,$w,2):float:$v-whole:$(call cm_elf,whole-$(call emb_word,$w,2)-float-$v,$(call emb_word,$w,1)))) \
+    $(foreach s,$(EMB_O2_SCENES),$(foreach v,subspace sweeps,cortex-m4f:$s:float:$v-O2:$(call cm_elf,cost-$s-float-$v-O2,cortex-m4f)))
 embedded-report: $(foreach c,$(EMB_COST_SPECS),$(call emb_word,$c,5))
-	sh host/embedded_report.sh $(EMB_COST_SPECS)
+	CM_OPT='$(CM_OPT)' sh host/embedded_report.sh $(EMB_COST_SPECS)
 
 ifeq ($(TARGET),host)
 run: all

@@ -301,21 +301,26 @@ void bs_contact_delassus(const bs_scene *scene, bs_contact_set *set)
     int i, j, k;
 
     for (i = 0; i < rows; ++i) {
-        const bs_real *beam_i = set->dir_beam[i];
         const bs_real *slider_i = set->dir_slider[i];
+        bs_real beam_i[BS_MAX_MODES]; /* beam part of M^-1 W_i, formed once per row */
+#if BS_WITH_ROTATION
+        const bs_real rotation_i = scene->inertia_inv * slider_i[2];
+#endif
+        for (k = 0; k < BS_NMODES(scene); ++k)
+#if BS_WITH_IMPLICIT
+            beam_i[k] = set->dir_beam[i][k] * scene->mode_gain[k];
+#else
+            beam_i[k] = set->dir_beam[i][k];
+#endif
         for (j = i; j < rows; ++j) {
             const bs_real *beam_j = set->dir_beam[j];
             const bs_real *slider_j = set->dir_slider[j];
             bs_real g = scene->mass_inv * (slider_i[0] * slider_j[0] + slider_i[1] * slider_j[1]);
 #if BS_WITH_ROTATION
-            g += scene->inertia_inv * slider_i[2] * slider_j[2];
+            g += rotation_i * slider_j[2];
 #endif
             for (k = 0; k < BS_NMODES(scene); ++k)
-#if BS_WITH_IMPLICIT
-                g += beam_i[k] * scene->mode_gain[k] * beam_j[k];
-#else
                 g += beam_i[k] * beam_j[k];
-#endif
             set->delassus[i][j] = g;
             set->delassus[j][i] = g;
         }

@@ -65,18 +65,29 @@
 
 enum { MODE_TAKEOFF, MODE_STICK, MODE_SLIP_POS, MODE_SLIP_NEG }; /* slip +: xi_T > 0, P_T = -mu P_N */
 
-/* xi of contact a's rows with the current P. */
+/* xi of contact a's rows with the current P: both rows in one pass over P, a
+ * contact's pair of columns at a time; each sum still adds in the order of j. */
 static void velocity(const bs_contact_set *set, int a, bs_real *xi)
 {
-    const int rows = ROWS * set->count;
-    int r, j;
-    for (r = 0; r < ROWS; ++r) {
-        const bs_real *g = set->delassus[ROWS * a + r];
-        bs_real v = set->free_velocity[ROWS * a + r];
-        for (j = 0; j < rows; ++j)
-            v += g[j] * set->percussion[j];
-        xi[r] = v;
+    const bs_real *p = set->percussion;
+    const bs_real *const end = p + ROWS * set->count;
+    const bs_real *g_n = set->delassus[ROWS * a];
+    bs_real v_n = set->free_velocity[ROWS * a];
+#if BS_WITH_FRICTION
+    const bs_real *g_t = set->delassus[ROWS * a + 1];
+    bs_real v_t = set->free_velocity[ROWS * a + 1];
+    for (; p < end; p += 2, g_n += 2, g_t += 2) {
+        v_n += g_n[0] * p[0];
+        v_t += g_t[0] * p[0];
+        v_n += g_n[1] * p[1];
+        v_t += g_t[1] * p[1];
     }
+    xi[1] = v_t;
+#else
+    for (; p < end; ++p, ++g_n)
+        v_n += g_n[0] * p[0];
+#endif
+    xi[0] = v_n;
 }
 
 /* prox of the contact laws with step r: P_N first, then P_T in the new cone. */

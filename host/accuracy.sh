@@ -171,13 +171,13 @@ pareto=$(awk '{ e = $6 < 0 ? -$6 : $6; c[NR] = $5; err[NR] = e; sc[NR] = $1; lin
 
 # Per scene and dt: the median error and cost over the caps >= 2 and both
 # precisions, and the Cortex-M4F cost implied by the float build's mean
-# instructions per step at dt 2e-5 s (docs/embedded.md; the count per step
-# barely depends on dt, the contacts do).
-m4f() { # the default core's mean insn/step in docs/embedded.md's main table, by column name
+# instructions per step over the whole run at dt 2e-5 s (docs/embedded.md; the
+# count per step barely depends on dt, the contacts do).
+m4f() { # the default core's whole-run mean insn/step in docs/embedded.md ("Whole runs"), by column name
     awk -F'|' -v s="$1" 'function cell(i,   x) { x = $i; gsub(/ /, "", x); return x }
         /^$/ { split("", col) }
         /^\| scene \| target \|/ { for (i = 2; i < NF; ++i) col[cell(i)] = i; next }
-        ("meaninsn/step" in col) && cell(col["scene"]) == s && cell(col["target"]) == "cortex-m4f" && cell(col["real"]) == "float" \
+        ("meaninsn/step" in col) && ("steps" in col) && cell(col["scene"]) == s && cell(col["target"]) == "cortex-m4f" && cell(col["real"]) == "float" \
             && (!("contactsolve" in col) || cell(col["contactsolve"]) == "subspace") { print cell(col["meaninsn/step"]); exit }' docs/embedded.md
 }
 by_dt=""
@@ -326,9 +326,9 @@ $pareto
 
 Single runs scatter, so the front above is ragged; per step size, medians over the caps
 2 ... none and both precisions are steadier. The last column is the cost on a Cortex-M4F:
-the float build's mean instructions per step at dt 2e-5 s (docs/embedded.md) divided by dt,
-as a share of a 168 MHz clock if one instruction took one cycle (it takes more, see
-docs/embedded.md; fig6_1mode float measured there):
+the float build's mean instructions per step over the whole 60 s run at dt 2e-5 s
+(docs/embedded.md, "Whole runs") divided by dt, as a share of a 168 MHz clock if one
+instruction took one cycle (it takes more, see docs/embedded.md):
 
 | scene | dt [s] | median high-branch speed error | median amplitude error | median cost [s/s] | Cortex-M4F instructions per simulated second |
 |---|---|---|---|---|---|

@@ -28,6 +28,10 @@
 #           CM_PROFILE) and split per function (port/cortex-m/profile.sh);
 #           the script stops if the profile's worst step differs from the
 #           count above.
+#   optimisation level: images whose SOLVE ends in "-O2" are built at -O2
+#           instead of the default CM_OPT (-O3): their code size and counts
+#           next to those of the same scene, target and solve at CM_OPT.
+# Env: CM_OPT (the level of the other images, for the text; the Makefile passes it).
 set -eu
 OUT=${OUT:-docs/embedded.md}
 TMP=$(mktemp -d)
@@ -117,7 +121,7 @@ done
 
 rows=""
 for spec in $specs; do
-    case $spec in *-whole:*) continue ;; esac
+    case $spec in *-whole:* | *-O2:*) continue ;; esac
     target=$(echo "$spec" | cut -d: -f1)
     scene=$(echo "$spec" | cut -d: -f2)
     real=$(echo "$spec" | cut -d: -f3)
@@ -139,6 +143,7 @@ for spec in $specs; do
     rows="$rows| $scene | $target | $real | $solve | $code | $((ro + scene_bytes)) | $sim_bytes | $stack | $steps | $mean | $worst ($contacts) | $tight_mean | $tight_worst ($tight_contacts) |
 "
     echo "$target $scene $real $mean $worst $tight_worst $solve" >> "$TMP/summary"
+    echo "$target $scene $real $solve $code $mean $worst $tight_worst" >> "$TMP/levels"
     # Cortex-M4F float, the scenes with targets: where the worst step of each phase goes
     if [ "$target" = cortex-m4f ] && [ "$real" = float ] && { [ "$scene" = fig6 ] || [ "$scene" = fig6_1mode ]; }; then
         for phase in scene tight; do
@@ -157,6 +162,27 @@ for spec in $specs; do
                 >> "$TMP/by_function-$scene"
         done
     fi
+done
+
+# The -O2 images, each next to its CM_OPT twin: "scene solve code mean worst tight_worst" x 2
+for spec in $specs; do
+    case $spec in *-O2:*) ;; *) continue ;; esac
+    elf=$(echo "$spec" | cut -d: -f5)
+    echo "embedded_report: $spec" >&2
+    sh port/cortex-m/count.sh "$elf" "${spec%%:*}" 600 > "$TMP/out" || qemu_failed "$elf" "$TMP/out"
+    set -- $(core_sizes "${elf%.elf}.map") $(step_counts "$TMP/out" scene) $(step_counts "$TMP/out" tight)
+    code=$1 mean=$6 worst=$7 tight_worst=${11}
+    echo "$spec" | awk -F: -v o2="$code $mean $worst $tight_worst" -v levels="$TMP/levels" '{
+        sub(/-O2$/, "", $4)
+        while ((getline line < levels) > 0) {
+            split(line, f, " ")
+            if (f[1] == $1 && f[2] == $2 && f[3] == $3 && f[4] == $4) twin = f[5] " " f[6] " " f[7] " " f[8]
+        }
+        if (twin == "") { print "embedded_report: no image at the default level for " $0 > "/dev/stderr"; exit 1 }
+        split(o2, a, " "); split(twin, b, " ")
+        printf "| %s | %s | %s | %d | %d | %d | %d | %d | %d | %d | %d | %.2f |\n", $2, $1, $4,
+            a[1], b[1], a[2], b[2], a[3], b[3], a[4], b[4], a[4] / b[4]
+    }' >> "$TMP/level_rows"
 done
 
 # by_function_table SCENE -> markdown rows: instructions per function in the worst step of
@@ -243,7 +269,7 @@ cat > "$OUT" <<EOF
 # The core on Cortex-M
 
 Produced by \`make embedded-report\` (host/embedded_report.sh) on $(date -u +%Y-%m-%d), commit $commit,
-with $(arm-none-eabi-gcc --version | head -n 1) (\`-O2\`, \`-std=c99\`, no fused multiply-add) and
+with $(arm-none-eabi-gcc --version | head -n 1) (\`${CM_OPT:?CM_OPT: run through make embedded-report}\`, \`-std=c99\`, no fused multiply-add) and
 $(qemu-system-arm --version | head -n 1). Each image is tests/embedded/scene_run.c with the core compiled
 against one scene (configs/NAME.h, \`beamslider gen\`) and the generic embedded port
 (port/embedded); see the script's header for what each column measures.
@@ -294,6 +320,17 @@ core ("subspace") and the sweeps build (port/cortex-m/profile.sh on a profile fr
 QEMU plugin; code inlined into a function counts there). The last row is the whole step; the
 script checks that it equals the worst count of the tables above.
 $breakdown
+## Optimisation level
+
+The same images built at -O2 instead of \`$CM_OPT\` (every other image of this report):
+core code in bytes and instructions per step (scene: mean and worst; tight: worst). The
+loops over modes and contact rows have lengths fixed by the compiled scene, which the
+higher level unrolls; the last column is the tight worst step at -O2 over the default.
+
+| scene | target | contact solve | code: -O2 | code: default | mean: -O2 | mean: default | worst: -O2 | worst: default | tight worst: -O2 | tight worst: default | tight worst -O2 / default |
+|---|---|---|---|---|---|---|---|---|---|---|---|
+$(cat "$TMP/level_rows" 2>/dev/null)
+
 ## Real-time margin at dt = 2e-5 s
 
 Cycle budget per step (clock x dt) over the worst instruction count of the whole run (where
