@@ -33,6 +33,7 @@
 #           next to those of the same scene, target and solve at CM_OPT.
 # Env: CM_OPT (the level of the other images, for the text; the Makefile passes it).
 set -eu
+: "${CM_OPT:?embedded_report: CM_OPT unset (run it through make embedded-report)}"
 OUT=${OUT:-docs/embedded.md}
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
@@ -269,7 +270,7 @@ cat > "$OUT" <<EOF
 # The core on Cortex-M
 
 Produced by \`make embedded-report\` (host/embedded_report.sh) on $(date -u +%Y-%m-%d), commit $commit,
-with $(arm-none-eabi-gcc --version | head -n 1) (\`${CM_OPT:?CM_OPT: run through make embedded-report}\`, \`-std=c99\`, no fused multiply-add) and
+with $(arm-none-eabi-gcc --version | head -n 1) (\`$CM_OPT\`, \`-std=c99\`, no fused multiply-add) and
 $(qemu-system-arm --version | head -n 1). Each image is tests/embedded/scene_run.c with the core compiled
 against one scene (configs/NAME.h, \`beamslider gen\`) and the generic embedded port
 (port/embedded); see the script's header for what each column measures.
