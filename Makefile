@@ -118,9 +118,9 @@ EMB_SWEEPS_SCENES := fig6 fig6_1mode
 # ... and the scenes' whole runs (t_end / dt steps, no tight phase), both solves,
 # TARGET:SCENE for the boards of the real-time targets
 EMB_WHOLE := cortex-m4f:fig6 cortex-m4f:fig6_1mode cortex-m7:fig6
-# ... and the M4F float images of these scenes at -O2 instead of CM_OPT's -O3 (a later
-# -O wins), both solves: what the optimisation level buys and costs
-EMB_O2_SCENES := fig6 fig6_1mode
+# ... and M4F float images at -O2 instead of CM_OPT's -O3 (a later -O wins), SCENE:SOLVE:
+# what the optimisation level buys and costs
+EMB_O2 := fig6:subspace fig6:sweeps fig6_1mode:subspace fig6_1mode:sweeps fig6_frictionless:subspace
 emb_steps = $(if $(filter cortex-m3 cortex-m0plus,$1),2000,20000)
 
 emb_word = $(word $2,$(subst :, ,$1))
@@ -133,8 +133,8 @@ $(foreach s,$(EMB_SWEEPS_SCENES),$(foreach t,$(EMB_SWEEPS_TARGETS),$(call cm_ima
 $(foreach w,$(EMB_WHOLE),$(foreach v,subspace:1 sweeps:0,$(call cm_image,whole-$(call emb_word,$w,2)-float-$(call emb_word,$v,1),\
     $(call emb_word,$w,1),$(EMB_SRC),$(call emb_flags,$(call emb_word,$w,2),float,BS_SCENE_STEPS,\
     -DBS_RUN_COST=1 -DBS_RUN_TIGHT_STEPS=0 -DBS_WITH_SUBSPACE=$(call emb_word,$v,2)))))
-$(foreach s,$(EMB_O2_SCENES),$(foreach v,subspace:1 sweeps:0,$(call cm_image,cost-$s-float-$(call emb_word,$v,1)-O2,\
-    cortex-m4f,$(EMB_SRC),$(call emb_flags,$s,float,20000,-DBS_RUN_COST=1 -DBS_WITH_SUBSPACE=$(call emb_word,$v,2) -O2))))
+$(foreach c,$(EMB_O2),$(call cm_image,cost-$(call emb_word,$c,1)-float-$(call emb_word,$c,2)-O2,cortex-m4f,$(EMB_SRC),\
+    $(call emb_flags,$(call emb_word,$c,1),float,20000,-DBS_RUN_COST=1 -DBS_WITH_SUBSPACE=$(if $(filter sweeps,$(call emb_word,$c,2)),0,1) -O2)))
 
 # The host twin of a check image: build/embhost/check-SCENE-REAL-STEPS
 EMB_HOST := $(BUILD)/embhost
@@ -161,7 +161,7 @@ EMB_COST_SPECS := $(foreach s,$(EMB_COST_SCENES),$(foreach t,$(EMB_COST_TARGETS)
     $(call emb_word,$t,1):$s:$(call emb_word,$t,2):sweeps:$(call cm_elf,cost-$s-$(call emb_word,$t,2)-sweeps,$(call emb_word,$t,1)))) \
     $(foreach w,$(EMB_WHOLE),$(foreach v,subspace sweeps,\
     $(call emb_word,$w,1):$(call emb_word,$w,2):float:$v-whole:$(call cm_elf,whole-$(call emb_word,$w,2)-float-$v,$(call emb_word,$w,1)))) \
-    $(foreach s,$(EMB_O2_SCENES),$(foreach v,subspace sweeps,cortex-m4f:$s:float:$v-O2:$(call cm_elf,cost-$s-float-$v-O2,cortex-m4f)))
+    $(foreach c,$(EMB_O2),cortex-m4f:$(call emb_word,$c,1):float:$(call emb_word,$c,2)-O2:$(call cm_elf,cost-$(call emb_word,$c,1)-float-$(call emb_word,$c,2)-O2,cortex-m4f))
 embedded-report: $(foreach c,$(EMB_COST_SPECS),$(call emb_word,$c,5))
 	CM_OPT='$(CM_OPT)' sh host/embedded_report.sh $(EMB_COST_SPECS)
 
