@@ -339,8 +339,9 @@ loops over modes and contact rows have lengths fixed by the compiled scene, whic
 higher level unrolls; the last column is the tight worst step at -O2 over the default.
 
 Core code of the scenes that leave something out, as a share of fig6's (subspace solve):
-$leaner. Where a share is above 100 %, the higher level unrolls the leaner scene's loops
-further than what its switches removed.
+$leaner.
+Where a share is above 100 %, unrolling the leaner scene's loops at the higher level adds
+more code than its switches removed.
 
 | scene | target | contact solve | code: -O2 | code: default | mean: -O2 | mean: default | worst: -O2 | worst: default | tight worst: -O2 | tight worst: default | tight worst -O2 / default |
 |---|---|---|---|---|---|---|---|---|---|---|---|
