@@ -165,7 +165,7 @@ for spec in $specs; do
     fi
 done
 
-# The -O2 images, each next to its CM_OPT twin: "scene solve code mean worst tight_worst" x 2
+# The -O2 images -> markdown rows: code, mean, worst and tight worst, each at -O2 and at CM_OPT
 for spec in $specs; do
     case $spec in *-O2:*) ;; *) continue ;; esac
     elf=$(echo "$spec" | cut -d: -f5)

@@ -36,7 +36,7 @@ CM_CC ?= arm-none-eabi-gcc
 CM_QEMU ?= qemu-system-arm
 # -O3: with a compiled scene the loops over modes and contact rows have short, known
 # lengths, which -O3 unrolls; the beamslider core then runs about 10 % (one mode) to 20 %
-# (five modes) fewer instructions per step than at -O2, for 1.5-2 times the code
+# (five modes) fewer instructions per step than at -O2, for 1.5-2.4 times the code
 # (docs/embedded.md, "Optimisation level")
 CM_OPT ?= -O3 -g
 
