@@ -305,7 +305,7 @@ void bs_contact_delassus(const bs_scene *scene, bs_contact_set *set)
         /* beam part of M^-1 W_i, formed once per row; a local copy even without
          * the implicit gains: the stores to set->delassus may alias dir_beam, so
          * through a pointer the compiler reloads row i for every entry (the
-         * explicit Cortex-M builds ran 2-4 % more instructions per step that way) */
+         * explicit Cortex-M builds ran 2-4 % more instructions in their worst steps) */
         bs_real beam_i[BS_MAX_MODES];
 #if BS_WITH_ROTATION
         const bs_real rotation_i = scene->inertia_inv * slider_i[2];
