@@ -1,6 +1,6 @@
 #!/bin/sh
 # check_cli.sh - the beamslider command line: output formats, exit codes and
-# error messages (0 ok, 1 the work failed, 2 bad usage or input; host/cli.h).
+# error messages (0 ok, 1 the work failed, 2 bad usage or input; host/cli/cli.h).
 #
 # usage, from the repository root:  sh tests/check_cli.sh PATH/TO/beamslider
 # Prints one line per check and a summary; exits 1 if any check failed.

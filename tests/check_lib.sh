@@ -1,5 +1,5 @@
 # check_lib.sh - shared by the shell checks of the command line
-# (tests/check_cli.sh, host/figures/check_sweep.sh): sourced, not run.
+# (tests/check_cli.sh, host/reports/figures/check_sweep.sh): sourced, not run.
 #
 # check_setup SCRIPT BIN: BIN must be an executable and the working folder the
 # repository root; makes $tmp, removed on exit. Then pass/fail/check* count

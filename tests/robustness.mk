@@ -40,10 +40,10 @@ ROBUSTNESS_PACKAGES := valgrind
 # project's warning gate is the gcc build.
 FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
 FUZZ_BASE := -std=c99 -O1 -g -ffp-contract=off -fno-math-errno $(FUZZ_SAN) \
-             -Icore -Iport -Iport/host -Ihost -Itests/fuzz -DFUZZ_CONFIGS='"$(CURDIR)/configs"'
+             -Icore/include -Icore/src -Iport -Iport/host -Ihost/lib -Itests/fuzz -DFUZZ_CONFIGS='"$(CURDIR)/configs"'
 FUZZ_LIB_WARNINGS := -Wall -Wextra -Wno-double-promotion
 FUZZ_SRC := $(CORE_SRC) $(HOST_LIB_SRC)
-FUZZ_HEADERS = $(wildcard core/*.h host/*.h port/*.h port/host/*.h tests/fuzz/*.h)
+FUZZ_HEADERS = $(wildcard core/*/*.h host/*/*.h port/*.h port/host/*.h tests/fuzz/*.h)
 fuzz_real_flag = -DBS_REAL_FLOAT=$(if $(filter float,$1),1,0)
 
 # fuzz_objects PRECISION: the library objects of one precision
@@ -115,7 +115,7 @@ fuzz-short-%: fuzz-build
 # source-based coverage (no sanitizers), each corpus replayed once.
 FUZZ_COV := $(BUILD)/fuzz-cov
 FUZZ_COV_FLAGS := -std=c99 -O0 -g -ffp-contract=off -fno-math-errno -fprofile-instr-generate -fcoverage-mapping \
-                  -Icore -Iport -Iport/host -Ihost -Itests/fuzz -DFUZZ_CONFIGS='"$(CURDIR)/configs"' -Wno-double-promotion
+                  -Icore/include -Icore/src -Iport -Iport/host -Ihost/lib -Itests/fuzz -DFUZZ_CONFIGS='"$(CURDIR)/configs"' -Wno-double-promotion
 fuzz-coverage:
 	@sh host/deps.sh $(FUZZ_COV_PACKAGES)
 	@mkdir -p $(FUZZ_COV)
@@ -128,8 +128,8 @@ fuzz-coverage:
 	    llvm-profdata-14 merge -sparse -o $(FUZZ_COV)/$$t.profdata $(FUZZ_COV)/$$t.profraw; \
 	    echo "== $$t: line coverage of the sources it exercises (seed + work corpus)"; \
 	    llvm-cov-14 report $(FUZZ_COV)/$$t -instr-profile=$(FUZZ_COV)/$$t.profdata \
-	        $$( [ $$t = fuzz_scene ] && echo host/scene_ini.c host/scene_build.c host/modal.c host/shape_fit.c core/bs_scene.c core/bs_sim.c \
-	                              || echo core/*.c ); \
+	        $$( [ $$t = fuzz_scene ] && echo host/lib/scene_ini.c host/lib/scene_build.c host/lib/modal.c host/lib/shape_fit.c core/src/bs_scene.c core/src/bs_sim.c \
+	                              || echo core/src/*.c ); \
 	done
 
 # ---- the test suite under ASan + UBSan -------------------------------------
@@ -158,7 +158,7 @@ VG_OBJ := $(BUILD)/double
 $(VG_OBJ)/tests/fuzz/vg_test_sim: tests/fuzz/vg_test_sim.c tests/test_sim.c $(VG_OBJ)/tests/support.o \
         $(HOST_LIB_SRC:%.c=$(VG_OBJ)/%.o) $(CORE_SRC:%.c=$(VG_OBJ)/%.o) | deps-test
 	@mkdir -p $(dir $@)
-	$(CC) -O2 -g $(BASE_CFLAGS:-DBS_REAL_FLOAT%=) -DBS_REAL_FLOAT=0 -Icore -Iport -Iport/host -Ihost -Itests \
+	$(CC) -O2 -g $(BASE_CFLAGS:-DBS_REAL_FLOAT%=) -DBS_REAL_FLOAT=0 -Icore/include -Icore/src -Iport -Iport/host -Ihost/lib -Itests \
 	    -o $@ tests/fuzz/vg_test_sim.c $(filter %.o,$^) $(TEST_LIBS)
 
 robustness-deps:

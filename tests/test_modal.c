@@ -1,4 +1,4 @@
-/* test_modal.c - modal data of the beam (host/modal.c) against MODEL.md 8
+/* test_modal.c - modal data of the beam (host/lib/modal.c) against MODEL.md 8
  * and against the defining equations. */
 #include "support.h"
 

@@ -1,4 +1,4 @@
-/* test_pgs.c - the contact solve (core/bs_pgs.c) against 50 independent
+/* test_pgs.c - the contact solve (core/src/bs_pgs.c) against 50 independent
  * frictional contact problems solved by Siconos and by enumeration
  * (tests/data/fc2d_cases.json, see tests/data/README.md).
  *

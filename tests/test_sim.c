@@ -1,4 +1,4 @@
-/* test_sim.c - the simulator's contract (core/bs_sim.c, core/bs_scene.c):
+/* test_sim.c - the simulator's contract (core/src/bs_sim.c, core/src/bs_scene.c):
  * input checks, the explicit stability limit, errors that keep the last good
  * state, determinism, the exact excitation phase, unbiased float drift and
  * the PCS kinematics. */

@@ -23,7 +23,7 @@
 #
 # Example
 #     include port/cortex-m/cortex-m.mk
-#     $(call cm_image,bench,cortex-m4f,bench/main.c core/bs_sim.c,-Icore -DBS_REAL_FLOAT=1)
+#     $(call cm_image,bench,cortex-m4f,bench/main.c core/src/bs_sim.c,-Icore -DBS_REAL_FLOAT=1)
 #     cm-bench: $(call cm_elf,bench,cortex-m4f)
 #     	$(if $(CM_TOOLS_OK),$(CM_COUNT) $< cortex-m4f,@echo "$(CM_TOOLS_MSG)")
 #

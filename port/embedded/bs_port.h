@@ -6,8 +6,8 @@
  * that have one (with -fno-math-errno), and the toolchain's correctly rounded
  * software sqrtf/sqrt elsewhere. __builtin_fabs(f) is one vabs, or a cleared
  * sign bit without an FPU, and never a branch. sin and cos are only reached for a slider
- * rotation above 0.05 rad (core/bs_contact.c uses exact polynomials below;
- * the excitation uses none, core/bs_excitation.c), which the paper's scenes
+ * rotation above 0.05 rad (core/src/bs_contact.c uses exact polynomials below;
+ * the excitation uses none, core/src/bs_excitation.c), which the paper's scenes
  * never see, so the toolchain's libm serves: its cost does not matter and its
  * accuracy is an ulp or two.
  */

@@ -9,7 +9,7 @@
  * hash and S the bit pattern of s, so equal lines mean bit-identical states.
  *
  * Cost mode (-DBS_RUN_COST=1): every step is bracketed by bs_board_mark(), so
- * that the instruction counter (port/cortex-m/count.sh) prints one count per
+ * that the instruction counter (tests/qemu/count.sh) prints one count per
  * step; nothing is printed while a phase runs. Phase "scene" runs the scene
  * from its start (impacts included); phase "tight" runs the same code on a copy
  * of the scene whose slot is pushed 2 um into the beam, started at the left

@@ -1,4 +1,4 @@
-/* test_reference.c - the reference model (host/reference/) against MODEL.md 8
+/* test_reference.c - the reference model (tests/reference/) against MODEL.md 8
  * check values, analytic cases and the 50 frictional contact problems of
  * tests/data/fc2d_cases.json. Links no core object. Run from the repository
  * root (reads configs/fig6.ini and tests/data/fc2d_cases.json).

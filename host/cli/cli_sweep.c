@@ -1,0 +1,247 @@
+/* cli_sweep.c - `beamslider sweep SCENE --dir up|down --out FILE.csv [options]`:
+ * the quasi-static PCS sweep of MODEL.md 6 (host/lib/sweep.c), one CSV row per
+ * grid point and a one-line JSON summary on stdout. */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cli.h"
+#include "scene_build.h"
+#include "sweep.h"
+
+static const char sweep_usage[] =
+    "usage: beamslider sweep SCENE.ini --dir up|down --out FILE.csv [--from 0] [--to 0.5]\n"
+    "                        [--step 0.005] [--hold 100] [--record 25] [--dt DT] [--pgs-iters K]\n"
+    "                        [--trace FILE.csv --trace-at S [--trace-periods 5]]\n"
+    "  quasi-static PCS sweep with continuation (MODEL.md 6), from rest at the first point:\n"
+    "  per grid point s~ (up: --from to --to, down: --to to --from) --hold excitation\n"
+    "  periods, then --record periods measured. CSV per point: s, amp_h (mean half\n"
+    "  peak-to-peak of w(4L/7) / h), v_mean (x_C displacement / (L periods), positive\n"
+    "  toward the centre), contact-solve statistics. --trace: per-step rows (beta, beam\n"
+    "  slope angle alpha at s~, beta + alpha, contacts) over the first --trace-periods\n"
+    "  recorded periods at the grid point S. JSON summary on stdout.\n";
+
+typedef struct sweep_cli {
+    const char *scene_path, *out_path, *trace_path;
+    int dir;              /* -1 not given, 0 up, 1 down */
+    double trace_at;      /* NAN: not given */
+} sweep_cli;
+
+/* Options that override a scene field: option name -> [section] key. */
+static const struct override {
+    const char *option, *section, *key;
+} overrides[] = {
+    { "--dt", "numerics", "dt" },
+    { "--pgs-iters", "numerics", "pgs_max_sweeps" },
+    { 0, 0, 0 }
+};
+
+static int parse_real(const char *option, const char *text, double low, double high, double *value)
+{
+    char *end;
+    errno = 0;
+    *value = strtod(text, &end);
+    if (end == text || *end || errno || !(*value >= low && *value <= high)) {
+        cli_error("%s %s: allowed: a number in [%g, %g]", option, text, low, high);
+        return -1;
+    }
+    return 0;
+}
+
+static int parse_int(const char *option, const char *text, long low, long high, int *value)
+{
+    char *end;
+    long v;
+    errno = 0;
+    v = strtol(text, &end, 10);
+    if (end == text || *end || errno || v < low || v > high) {
+        cli_error("%s %s: allowed: an integer in [%ld, %ld]", option, text, low, high);
+        return -1;
+    }
+    *value = (int)v;
+    return 0;
+}
+
+static int parse_options(int argc, char **argv, sweep_cli *cli, sweep_options *options, scene_file *file)
+{
+    char err[1024];
+    int i;
+
+    if (argc < 1 || argv[0][0] == '-') {
+        cli_error("sweep needs a scene file first: beamslider sweep SCENE.ini --dir up|down --out FILE.csv");
+        return -1;
+    }
+    cli->scene_path = argv[0];
+    cli->out_path = cli->trace_path = NULL;
+    cli->dir = -1;
+    cli->trace_at = (double)NAN;
+    options->from = 0.0;
+    options->to = 0.5;
+    options->step = 0.005;
+    options->hold = 100;
+    options->record = 25;
+    options->trace_periods = -1; /* not given */
+    if (scene_load(cli->scene_path, file, err, sizeof err) != 0) {
+        cli_error("%s", err);
+        return -1;
+    }
+    for (i = 1; i < argc; i += 2) {
+        const char *option = argv[i], *value = i + 1 < argc ? argv[i + 1] : NULL;
+        const struct override *o;
+        int failed = 0;
+        if (!value) {
+            cli_error("option %s needs a value", option);
+            return -1;
+        }
+        for (o = overrides; o->option && strcmp(o->option, option); ++o)
+            ;
+        if (o->option) {
+            if (scene_set(file, o->section, o->key, value, option, err, sizeof err) != 0) {
+                cli_error("%s", err);
+                return -1;
+            }
+        } else if (!strcmp(option, "--from")) {
+            failed = parse_real(option, value, 0.0, 1.0, &options->from);
+        } else if (!strcmp(option, "--to")) {
+            failed = parse_real(option, value, 0.0, 1.0, &options->to);
+        } else if (!strcmp(option, "--step")) {
+            failed = parse_real(option, value, 1e-9, 1.0, &options->step);
+        } else if (!strcmp(option, "--hold")) {
+            failed = parse_int(option, value, 0, 1000000, &options->hold);
+        } else if (!strcmp(option, "--record")) {
+            failed = parse_int(option, value, 1, 1000000, &options->record);
+        } else if (!strcmp(option, "--dir")) {
+            cli->dir = !strcmp(value, "up") ? 0 : !strcmp(value, "down") ? 1 : -2;
+            if (cli->dir == -2) {
+                cli_error("--dir %s: allowed: up or down", value);
+                return -1;
+            }
+        } else if (!strcmp(option, "--out")) {
+            cli->out_path = value;
+        } else if (!strcmp(option, "--trace")) {
+            cli->trace_path = value;
+        } else if (!strcmp(option, "--trace-at")) {
+            failed = parse_real(option, value, 0.0, 1.0, &cli->trace_at);
+        } else if (!strcmp(option, "--trace-periods")) {
+            failed = parse_int(option, value, 1, 1000000, &options->trace_periods);
+        } else {
+            cli_error("unknown option '%s' (see beamslider --help)", option);
+            return -1;
+        }
+        if (failed)
+            return -1;
+    }
+    if (cli->dir < 0) {
+        cli_error("sweep needs --dir up or --dir down");
+        return -1;
+    }
+    options->down = cli->dir;
+    if (!cli->out_path) {
+        cli_error("sweep needs --out FILE.csv");
+        return -1;
+    }
+    if (!(options->from < options->to)) {
+        cli_error("--from %g --to %g: --from must be below --to (--dir sets the direction)", options->from,
+                  options->to);
+        return -1;
+    }
+    if (sweep_grid_size(options->from, options->to, options->step) < 0) {
+        cli_error("--step %g: must divide --to - --from = %g into at most %d intervals", options->step,
+                  options->to - options->from, SWEEP_MAX_POINTS - 1);
+        return -1;
+    }
+    options->trace_index = -1;
+    if (cli->trace_path || !isnan(cli->trace_at)) {
+        if (!cli->trace_path || isnan(cli->trace_at)) {
+            cli_error("--trace FILE.csv and --trace-at S go together");
+            return -1;
+        }
+        options->trace_index = sweep_grid_index(options, cli->trace_at);
+        if (options->trace_index < 0) {
+            cli_error("--trace-at %g: not a grid point of --from %g --to %g --step %g", cli->trace_at,
+                      options->from, options->to, options->step);
+            return -1;
+        }
+        if (options->trace_periods < 0) /* default: 5 periods, or all recorded ones if fewer */
+            options->trace_periods = options->record < 5 ? options->record : 5;
+        if (options->trace_periods > options->record) {
+            cli_error("--trace-periods %d: allowed: at most --record = %d", options->trace_periods,
+                      options->record);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* Closes an output; reports and returns -1 if it misses anything. */
+static int close_output(const char *path, FILE *file, const sweep_result *result, int points)
+{
+    if (!file)
+        return 0;
+    if (cli_close_output(path, file, result->write_errno) != 0)
+        return -1;
+    if (result->write_failed) {
+        cli_error("%s holds only %d of %d points: the sweep stopped at a write error", path,
+                  result->points_done, points);
+        return -1;
+    }
+    return 0;
+}
+
+int cli_sweep(int argc, char **argv)
+{
+    static scene_file file; /* static: large */
+    static bs_scene scene;
+    static scene_model model;
+    sweep_cli cli;
+    sweep_options options;
+    sweep_result r;
+    char err[1024];
+    FILE *csv, *trace;
+    int failed, points;
+
+    if (argc >= 1 && (!strcmp(argv[0], "--help") || !strcmp(argv[0], "-h"))) {
+        fputs(sweep_usage, stdout);
+        return CLI_OK;
+    }
+    if (parse_options(argc, argv, &cli, &options, &file) != 0)
+        return CLI_USAGE;
+    if (scene_build(&file, &scene, &model, err, sizeof err) != 0) {
+        cli_error("%s", err);
+        return CLI_USAGE;
+    }
+    if (cli_open_output(cli.out_path, &csv) != 0)
+        return CLI_FAILED;
+    if (cli_open_output(cli.trace_path, &trace) != 0) {
+        fclose(csv);
+        return CLI_FAILED;
+    }
+    points = sweep_grid_size(options.from, options.to, options.step);
+    options.dt = file.params.dt;
+    options.csv = csv;
+    options.points = NULL;
+    options.trace = trace;
+    options.show_progress = 1;
+    failed = sweep_run(&scene, &options, &r) != 0;
+    {
+        const int csv_lost = close_output(cli.out_path, csv, &r, points) != 0;
+        const int trace_lost = close_output(cli.trace_path, trace, &r, points) != 0;
+        if (csv_lost || trace_lost)
+            r.write_failed = failed = 1;
+    }
+    if (r.status != BS_OK)
+        cli_error("%s: sweep stopped after %d of %d points: %s; the CSV holds the complete points",
+                  file.params.name, r.points_done, points, bs_status_text(r.status));
+    printf("{\"scene\":\"%s\",\"command\":\"sweep\",\"dir\":\"%s\",\"precision\":\"%s\",\"modes\":%d,"
+           "\"dt\":%g,\"status\":\"%s\",\"from\":%.9g,\"to\":%.9g,\"step\":%.9g,\"hold\":%d,\"record\":%d,"
+           "\"points\":%d,\"steps\":%llu,\"wall_s\":%.4g,\"steps_per_s\":%.4g,\"max_pgs_iters\":%d,"
+           "\"unconverged_steps\":%llu,\"contact_steps\":%llu,\"mean_pgs_iters\":%.4g}\n",
+           file.params.name, options.down ? "down" : "up", BS_REAL_NAME, scene.n_modes, file.params.dt,
+           r.write_failed ? "write error" : bs_status_text(r.status), options.from, options.to, options.step,
+           options.hold, options.record, r.points_done, (unsigned long long)r.steps, r.wall_s,
+           r.wall_s > 0.0 ? (double)r.steps / r.wall_s : 0.0, r.max_sweeps,
+           (unsigned long long)r.unconverged_steps, (unsigned long long)r.contact_steps,
+           r.contact_steps ? (double)r.total_sweeps / (double)r.contact_steps : 0.0);
+    return failed ? CLI_FAILED : CLI_OK;
+}

@@ -1,0 +1,53 @@
+# host/reports/reports.mk - the report targets: each regenerates a page of docs/
+# from the code (README.md, "Reports"). Included by the top-level Makefile.
+#
+#   make fig6-report    the signature move in numbers -> docs/validation.md section 5
+#   make accuracy       error against run time vs the reference -> docs/accuracy.md
+#   make stability      the stiff and extreme cases -> docs/stability.md
+#   make bench          steps per second -> docs/performance.md
+#   make figures        PCS sweeps and free runs of the papers' figures (double,
+#                       all cores) -> docs/figures/*.png and the tables of
+#                       docs/validation.md section 7 (host/reports/figures/figures.sh;
+#                       CSVs in build/figures/); JOBS=1 gives the same on one core
+#
+# `make test` also runs sweep-check (host/reports/figures/check_sweep.sh).
+
+.PHONY: fig6-report accuracy stability bench figures sweep-check deps-figures
+
+fig6-report:
+	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
+	sh host/reports/fig6_report.sh
+
+$(OBJ)/bs-stability: host/reports/stability.c $(HOST_LIB_OBJ) $(CORE_OBJ)
+	$(CC) $(CFLAGS) $(HOST_CFLAGS) -o $@ $^ $(HOST_LIBS)
+
+accuracy: $(BUILD)/bs-reference
+	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
+	$(MAKE) --no-print-directory REAL=double $(SWEEPS_FLAGS) $(SWEEPS_BUILD)/double/beamslider
+	$(MAKE) --no-print-directory REAL=float $(SWEEPS_FLAGS) $(SWEEPS_BUILD)/float/beamslider
+	sh host/reports/accuracy.sh
+
+stability:
+	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/bs-stability
+	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/bs-stability
+	sh host/reports/stability_report.sh $(BUILD)/double/bs-stability $(BUILD)/float/bs-stability
+
+bench:
+	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
+	sh host/reports/bench.sh
+
+figures: deps-figures
+	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	BIN=$(BUILD)/double/beamslider DATA=$(BUILD)/figures $(if $(JOBS),JOBS=$(JOBS)) sh host/reports/figures/figures.sh
+
+deps-figures:
+	@sh host/deps.sh gnuplot-nox
+
+sweep-check:
+	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	@sh host/reports/figures/check_sweep.sh $(BUILD)/double/beamslider
+
+TEST_EXTRA += sweep-check

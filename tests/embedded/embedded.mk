@@ -1,0 +1,95 @@
+# tests/embedded/embedded.mk - the core compiled against one scene for Cortex-M,
+# included by the top-level Makefile (which sets BUILD, REAL, TARGET, SCENE, STEPS,
+# CORE_SRC, BASE_CFLAGS).
+#
+#   make embedded-test     every image of EMB_CHECKS under QEMU against its host
+#                          twin, bit for bit (part of `make test`), the QEMU
+#                          harness self-test and the core symbol check of each image
+#   make embedded-report   flash, RAM, stack, instructions per step -> docs/embedded.md
+#   make TARGET=cortex-m4f [SCENE=fig6] [REAL=float] [STEPS=N] [run]
+#                          one image of tests/embedded/scene_run.c (and its QEMU run)
+#
+# Embedded: the core compiled against one scene (configs/NAME.h) for Cortex-M
+# targets, run under QEMU (port/cortex-m). Each image runs
+# tests/embedded/scene_run.c; the same program built for the host must print
+# the same lines (tests/check_embedded.sh).
+include port/cortex-m/cortex-m.mk
+
+# emb_flags SCENE REAL STEPS EXTRA
+emb_flags = -fno-tree-loop-distribute-patterns -Icore/include -Icore/src -Iport/embedded -I. -DBS_REAL_FLOAT=$(if $(filter float,$2),1,0) \
+            -DBS_SCENE_CONFIG='"configs/$1.h"' -DBS_RUN_STEPS=$3 $4
+EMB_SRC := tests/embedded/scene_run.c $(CORE_SRC)
+# TARGET:SCENE:REAL:STEPS run in `make test` (soft-float targets: fewer steps)
+EMB_CHECKS := cortex-m4f:fig6:float:20000 cortex-m4f:fig6_1mode:float:20000 \
+              cortex-m7:fig6:double:20000 cortex-m7:fig6_1mode:float:20000 \
+              cortex-m3:fig6_1mode:float:2000 cortex-m0plus:fig6_1mode:float:2000
+# TARGET:REAL per scene for `make embedded-report`
+EMB_COST_TARGETS := cortex-m4f:float cortex-m7:float cortex-m7:double cortex-m3:float cortex-m0plus:float
+EMB_COST_SCENES := fig6 fig6_1mode fig6_frictionless
+# ... and the contact solve without its subspace step (-DBS_WITH_SUBSPACE=0,
+# a hard bound on the cost of a step), on the FPU targets' float builds
+EMB_SWEEPS_TARGETS := cortex-m4f:float cortex-m7:float
+EMB_SWEEPS_SCENES := fig6 fig6_1mode
+# ... and the scenes' whole runs (t_end / dt steps, no tight phase), both solves,
+# TARGET:SCENE for the boards of the real-time targets
+EMB_WHOLE := cortex-m4f:fig6 cortex-m4f:fig6_1mode cortex-m7:fig6
+# ... and M4F float images at -O2 instead of CM_OPT's -O3 (a later -O wins), SCENE:SOLVE:
+# what the optimisation level buys and costs
+EMB_O2 := fig6:subspace fig6:sweeps fig6_1mode:subspace fig6_1mode:sweeps fig6_frictionless:subspace
+emb_steps = $(if $(filter cortex-m3 cortex-m0plus,$1),2000,20000)
+
+emb_word = $(word $2,$(subst :, ,$1))
+$(foreach c,$(EMB_CHECKS),$(call cm_image,check-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1),\
+    $(EMB_SRC),$(call emb_flags,$(call emb_word,$c,2),$(call emb_word,$c,3),$(call emb_word,$c,4),)))
+$(foreach s,$(EMB_COST_SCENES),$(foreach t,$(EMB_COST_TARGETS),$(call cm_image,cost-$s-$(call emb_word,$t,2),\
+    $(call emb_word,$t,1),$(EMB_SRC),$(call emb_flags,$s,$(call emb_word,$t,2),$(call emb_steps,$(call emb_word,$t,1)),-DBS_RUN_COST=1))))
+$(foreach s,$(EMB_SWEEPS_SCENES),$(foreach t,$(EMB_SWEEPS_TARGETS),$(call cm_image,cost-$s-$(call emb_word,$t,2)-sweeps,\
+    $(call emb_word,$t,1),$(EMB_SRC),$(call emb_flags,$s,$(call emb_word,$t,2),20000,-DBS_RUN_COST=1 -DBS_WITH_SUBSPACE=0))))
+$(foreach w,$(EMB_WHOLE),$(foreach v,subspace:1 sweeps:0,$(call cm_image,whole-$(call emb_word,$w,2)-float-$(call emb_word,$v,1),\
+    $(call emb_word,$w,1),$(EMB_SRC),$(call emb_flags,$(call emb_word,$w,2),float,BS_SCENE_STEPS,\
+    -DBS_RUN_COST=1 -DBS_RUN_TIGHT_STEPS=0 -DBS_WITH_SUBSPACE=$(call emb_word,$v,2)))))
+$(foreach c,$(EMB_O2),$(call cm_image,cost-$(call emb_word,$c,1)-float-$(call emb_word,$c,2)-O2,cortex-m4f,$(EMB_SRC),\
+    $(call emb_flags,$(call emb_word,$c,1),float,20000,-DBS_RUN_COST=1 -DBS_WITH_SUBSPACE=$(if $(filter sweeps,$(call emb_word,$c,2)),0,1) -O2)))
+
+# The host twin of a check image: build/embhost/check-SCENE-REAL-STEPS
+EMB_HOST := $(BUILD)/embhost
+$(EMB_HOST)/check-%: tests/embedded/scene_run.c tests/embedded/bs_board_host.c $(CORE_SRC) $(wildcard core/*/*.h configs/*.h)
+	@mkdir -p $(dir $@)
+	$(CC) -O2 $(BASE_CFLAGS:-DBS_REAL_FLOAT%=) -Icore/include -Icore/src -Iport/host -Iport/cortex-m -I. \
+	    -DBS_REAL_FLOAT=$(if $(filter float,$(word 2,$(subst -, ,$(subst fig6_1mode,fig6x1mode,$*)))),1,0) \
+	    -DBS_SCENE_CONFIG='"configs/$(subst x1mode,_1mode,$(word 1,$(subst -, ,$(subst fig6_1mode,fig6x1mode,$*)))).h"' \
+	    -DBS_RUN_STEPS=$(word 3,$(subst -, ,$*)) -o $@ tests/embedded/scene_run.c tests/embedded/bs_board_host.c $(CORE_SRC) -lm
+
+EMB_CHECK_PAIRS := $(foreach c,$(EMB_CHECKS),$(call emb_word,$c,1):$(call cm_elf,check-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1)):$(EMB_HOST)/check-$(call emb_word,$c,2)-$(call emb_word,$c,3)-$(call emb_word,$c,4))
+
+embedded-test: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_CHECK_PAIRS),$(call emb_word,$p,2) $(call emb_word,$p,3)))
+	$(if $(CM_TOOLS_OK),@sh tests/check_embedded.sh $(EMB_CHECK_PAIRS),@echo "$(CM_TOOLS_MSG)")
+	$(if $(CM_TOOLS_OK),@CM_BUILD=$(CM_BUILD) sh tests/qemu/selftest.sh)
+	$(if $(CM_TOOLS_OK),@set -e; $(foreach c,$(EMB_CHECKS),NM=arm-none-eabi-nm sh tests/check_core_symbols.sh \
+	    $(call emb_word,$c,3) $(CM_BUILD)/$(call emb_word,$c,1)/check-$(call emb_word,$c,2)-$(call emb_word,$c,3).obj/core/src/*.o;))
+
+# report arguments TARGET:SCENE:REAL:SOLVE:ELF (whole runs: SOLVE is subspace-whole or
+# sweeps-whole; -O2 images: subspace-O2 or sweeps-O2)
+EMB_COST_SPECS := $(foreach s,$(EMB_COST_SCENES),$(foreach t,$(EMB_COST_TARGETS),\
+    $(call emb_word,$t,1):$s:$(call emb_word,$t,2):subspace:$(call cm_elf,cost-$s-$(call emb_word,$t,2),$(call emb_word,$t,1)))) \
+    $(foreach s,$(EMB_SWEEPS_SCENES),$(foreach t,$(EMB_SWEEPS_TARGETS),\
+    $(call emb_word,$t,1):$s:$(call emb_word,$t,2):sweeps:$(call cm_elf,cost-$s-$(call emb_word,$t,2)-sweeps,$(call emb_word,$t,1)))) \
+    $(foreach w,$(EMB_WHOLE),$(foreach v,subspace sweeps,\
+    $(call emb_word,$w,1):$(call emb_word,$w,2):float:$v-whole:$(call cm_elf,whole-$(call emb_word,$w,2)-float-$v,$(call emb_word,$w,1)))) \
+    $(foreach c,$(EMB_O2),cortex-m4f:$(call emb_word,$c,1):float:$(call emb_word,$c,2)-O2:$(call cm_elf,cost-$(call emb_word,$c,1)-float-$(call emb_word,$c,2)-O2,cortex-m4f))
+embedded-report: $(foreach c,$(EMB_COST_SPECS),$(call emb_word,$c,5))
+	CM_OPT='$(CM_OPT)' sh host/reports/embedded_report.sh $(EMB_COST_SPECS)
+
+
+ifneq ($(TARGET),host)
+# make TARGET=cortex-m4f [SCENE=fig6] [REAL=float] [STEPS=N] [run]: the firmware
+# tests/embedded/scene_run.c for one target and scene; `run` runs it under QEMU.
+ifeq ($(filter $(TARGET),$(CM_TARGETS)),)
+$(error TARGET must be host or one of: $(CM_TARGETS))
+endif
+$(call cm_image,$(SCENE)-$(REAL)-$(STEPS),$(TARGET),$(EMB_SRC),$(call emb_flags,$(SCENE),$(REAL),$(STEPS),))
+all: $(call cm_elf,$(SCENE)-$(REAL)-$(STEPS),$(TARGET))
+	@arm-none-eabi-size $<
+run: all
+	$(CM_RUN) $(call cm_elf,$(SCENE)-$(REAL)-$(STEPS),$(TARGET)) $(TARGET) 300
+endif
