@@ -3,14 +3,16 @@
 #   make              build build/beamslider (REAL precision)
 #   make run          build and run the fig6 scene (60 s), print its summary
 #   make test         build and run every test, float and double
-#   make test-sweeps  the contact solve's tests built with -DBS_WITH_SUBSPACE=0
-#   make bench        steps per second -> docs/performance.md
-#   make fig6-report  the signature move in numbers -> docs/validation.md
+#   make lib          the core as a static library: build/lib/libbeamslider-REAL.a
+#                     (with TARGET=cortex-m4f SCENE=fig6: for that target and scene)
+#   make install PREFIX=/usr/local   the library in both precisions, its headers,
+#                     pkg-config files (beamslider-double, beamslider-float) and the
+#                     CMake package beamslider
+#   make fields       docs/fields.md: every scene field (also `beamslider fields`)
 #   make configs      regenerate the compile-time scene headers configs/*.h
-#   make embedded-report  flash, RAM, stack, instructions per step on Cortex-M -> docs/embedded.md
-#   make stability    the stiff and extreme cases -> docs/stability.md
-#   make accuracy     error against run time vs the reference -> docs/accuracy.md
-#   make figures      the papers' figures and validation tables -> docs/figures, docs/validation.md
+#   make test-sweeps  the contact solve's tests built with BS_WITH_SUBSPACE=0
+#   make bench, fig6-report, accuracy, stability, figures, embedded-report
+#                     the reports of docs/ (README.md, "Reports")
 #   make clean
 #   make TARGET=cortex-m4f [SCENE=fig6] [REAL=float] [run]
 #                     cross build (and QEMU run) of one compiled scene
@@ -22,6 +24,8 @@ BUILD ?= build
 TARGET ?= host        # host, or a Cortex-M target: cortex-m4f cortex-m7 cortex-m3 cortex-m0plus
 SCENE ?= fig6         # the compiled scene of a Cortex-M build (configs/SCENE.h)
 STEPS ?= 20000        # steps the Cortex-M build runs
+CONFIG ?=             # more switches of the core's build configuration: NAME=VALUE ...
+PREFIX ?= /usr/local  # where `make install` puts the library
 
 ifeq ($(filter $(strip $(REAL)),float double),)
 $(error REAL must be float or double, not '$(REAL)')
@@ -30,21 +34,29 @@ REAL := $(strip $(REAL))
 TARGET := $(strip $(TARGET))
 SCENE := $(strip $(SCENE))
 STEPS := $(strip $(STEPS))
+CONFIG := $(strip $(CONFIG))
+PREFIX := $(strip $(PREFIX))
 OBJ := $(BUILD)/$(REAL)
-REAL_FLAG := -DBS_REAL_FLOAT=$(if $(filter float,$(REAL)),1,0)
+VERSION := $(shell sed -n 's/^\#define BS_VERSION_STRING "\(.*\)"/\1/p' core/include/beamslider.h)
 
+# The generated build configuration of this build (core/include/bs_build_config.h.in):
+# the precision and CONFIG's switches. Everything that includes beamslider.h finds it first.
+CONFIG_H := $(OBJ)/include/bs_build_config.h
 # -std=c99 keeps fused multiply-add off (-ffp-contract=off made explicit);
 # -fno-math-errno lets sqrt be one instruction and changes no result.
 WARNINGS := -Wall -Wextra -Werror -Wdouble-promotion -Wfloat-conversion -Wundef -Wshadow \
             -Wstrict-prototypes -Wvla
 CFLAGS ?= -O2 -g
-BASE_CFLAGS := -std=c99 -ffp-contract=off -fno-math-errno $(WARNINGS) $(REAL_FLAG)
+BASE_CFLAGS := -std=c99 -ffp-contract=off -fno-math-errno $(WARNINGS)
 # Core: no libc calls; keep GCC from turning loops into memset/memcpy calls
 # (a GCC flag: other compilers go without; check_core_symbols.sh still checks).
 NO_LOOP_CALLS := $(shell $(CC) -fno-tree-loop-distribute-patterns -Werror -E -x c /dev/null >/dev/null 2>&1 \
                    && echo -fno-tree-loop-distribute-patterns)
-CORE_CFLAGS := $(BASE_CFLAGS) $(NO_LOOP_CALLS) -Icore/include -Icore/src -Iport/host
-HOST_CFLAGS := $(BASE_CFLAGS) -Icore/include -Icore/src -Iport -Iport/host -Ihost/lib -Ihost/cli
+CORE_INC := -I$(OBJ)/include -Icore/include
+CORE_CFLAGS := $(BASE_CFLAGS) $(NO_LOOP_CALLS) $(CORE_INC) -Icore/src -Iport/host
+HOST_CFLAGS := $(BASE_CFLAGS) $(CORE_INC) -Iport -Iport/host -Ihost/lib -Ihost/cli
+# Tests also reach the core's internal headers (core/src) to test its parts.
+TEST_CFLAGS := $(HOST_CFLAGS) -Icore/src -Itests
 
 CORE_SRC := $(wildcard core/src/*.c)
 HOST_CLI_SRC := $(wildcard host/cli/*.c)
@@ -61,7 +73,7 @@ TEST_LIBS := -lcmocka -lcjson $(HOST_LIBS)
 BUILD_PACKAGES := gcc make libc6-dev libinih-dev
 TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev libcjson-dev binutils
 
-.PHONY: all run test test-one test-sweeps bench fig6-report configs embedded-test embedded-report stability accuracy accuracy-check clean deps-build deps-test
+.PHONY: all run test test-one test-sweeps lib install configs fields accuracy-check clean deps-build deps-test .force
 .SECONDARY:
 .DEFAULT_GOAL := all
 
@@ -74,21 +86,25 @@ endif
 $(OBJ)/beamslider: $(HOST_CLI_OBJ) $(HOST_LIB_OBJ) $(CORE_OBJ)
 	$(CC) $(CFLAGS) -o $@ $^ $(HOST_LIBS)
 
-$(OBJ)/core/%.o: core/%.c $(wildcard core/*/*.h) port/host/bs_port.h | deps-build
+# (both precisions: the reference and the reports use the double one from any REAL)
+$(BUILD)/double/include/bs_build_config.h $(BUILD)/float/include/bs_build_config.h: .force
+	@sh port/build_config.sh $@ $(word 2,$(subst /, ,$(patsubst $(BUILD)/%,x/%,$@))) $(CONFIG)
+
+$(OBJ)/core/%.o: core/%.c $(wildcard core/*/*.h) port/host/bs_port.h $(CONFIG_H) | deps-build
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(CORE_CFLAGS) -c -o $@ $<
 
-$(OBJ)/host/%.o: host/%.c $(wildcard host/*/*.h core/include/*.h) | deps-build
+$(OBJ)/host/%.o: host/%.c $(wildcard host/*/*.h core/include/*.h) $(CONFIG_H) | deps-build
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(HOST_CFLAGS) -c -o $@ $<
 
-$(OBJ)/port/host/%.o: port/host/%.c port/bs_platform.h | deps-build
+$(OBJ)/port/host/%.o: port/host/%.c port/bs_platform.h $(CONFIG_H) | deps-build
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(HOST_CFLAGS) -c -o $@ $<
 
-$(OBJ)/tests/%.o: tests/%.c $(wildcard tests/*.h host/*/*.h core/*/*.h) | deps-test
+$(OBJ)/tests/%.o: tests/%.c $(wildcard tests/*.h host/*/*.h core/*/*.h) $(CONFIG_H) | deps-test
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(HOST_CFLAGS) -Icore/src -Itests -c -o $@ $<
+	$(CC) $(CFLAGS) $(TEST_CFLAGS) -c -o $@ $<
 
 $(OBJ)/tests/test_%: $(OBJ)/tests/test_%.o $(OBJ)/tests/support.o $(HOST_LIB_OBJ) $(CORE_OBJ)
 	$(CC) $(CFLAGS) -o $@ $^ $(TEST_LIBS)
@@ -110,11 +126,11 @@ test-one: $(TEST_BIN) $(OBJ)/beamslider
 # The contact solve built without its subspace step (BS_WITH_SUBSPACE=0, the
 # real-time option of docs/porting.md): its unit tests in both precisions.
 SWEEPS_BUILD := $(BUILD)/sweeps
-SWEEPS_FLAGS := CFLAGS="$(CFLAGS) -DBS_WITH_SUBSPACE=0" BUILD=$(SWEEPS_BUILD)
+SWEEPS_FLAGS := CONFIG=BS_WITH_SUBSPACE=0 BUILD=$(SWEEPS_BUILD)
 test-sweeps:
 	@set -e; for real in double float; do \
 	    $(MAKE) --no-print-directory -s REAL=$$real $(SWEEPS_FLAGS) $(SWEEPS_BUILD)/$$real/tests/test_pgs; \
-	    echo "== $(SWEEPS_BUILD)/$$real/tests/test_pgs (-DBS_WITH_SUBSPACE=0)"; $(SWEEPS_BUILD)/$$real/tests/test_pgs; done
+	    echo "== $(SWEEPS_BUILD)/$$real/tests/test_pgs (BS_WITH_SUBSPACE=0)"; $(SWEEPS_BUILD)/$$real/tests/test_pgs; done
 
 # Fragments of the other tools (figures, reference, robustness) add their own
 # targets and append test targets to TEST_EXTRA.

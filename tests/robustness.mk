@@ -44,17 +44,18 @@ FUZZ_BASE := -std=c99 -O1 -g -ffp-contract=off -fno-math-errno $(FUZZ_SAN) \
 FUZZ_LIB_WARNINGS := -Wall -Wextra -Wno-double-promotion
 FUZZ_SRC := $(CORE_SRC) $(HOST_LIB_SRC)
 FUZZ_HEADERS = $(wildcard core/*/*.h host/*/*.h port/*.h port/host/*.h tests/fuzz/*.h)
-fuzz_real_flag = -DBS_REAL_FLOAT=$(if $(filter float,$1),1,0)
+# the build configuration of a precision (the host build's, Makefile)
+fuzz_real_flag = -I$(BUILD)/$1/include
 
 # fuzz_objects PRECISION: the library objects of one precision
 fuzz_objects = $(FUZZ_SRC:%.c=$(FUZZ_BUILD)/$1/%.o)
 
 define fuzz_precision_rules
-$(FUZZ_BUILD)/$1/%.o: %.c $$(FUZZ_HEADERS) | fuzz-deps
+$(FUZZ_BUILD)/$1/%.o: %.c $$(FUZZ_HEADERS) $(BUILD)/$1/include/bs_build_config.h | fuzz-deps
 	@mkdir -p $$(dir $$@)
 	$$(FUZZ_CC) $$(FUZZ_BASE) $$(FUZZ_LIB_WARNINGS) $(call fuzz_real_flag,$1) -fsanitize=fuzzer-no-link -c -o $$@ $$<
 
-$(FUZZ_BUILD)/$1/tests/fuzz/%.o: tests/fuzz/%.c $$(FUZZ_HEADERS) | fuzz-deps
+$(FUZZ_BUILD)/$1/tests/fuzz/%.o: tests/fuzz/%.c $$(FUZZ_HEADERS) $(BUILD)/$1/include/bs_build_config.h | fuzz-deps
 	@mkdir -p $$(dir $$@)
 	$$(FUZZ_CC) $$(FUZZ_BASE) $$(WARNINGS) $(call fuzz_real_flag,$1) -fsanitize=fuzzer-no-link -c -o $$@ $$<
 endef
@@ -70,14 +71,14 @@ $(FUZZ_BUILD)/fuzz_step_float: $(FUZZ_BUILD)/float/tests/fuzz/fuzz_step.o $(call
 
 # fuzz_compiled_rules SCENE PRECISION: the core and fuzz_step.c for one compiled scene
 define fuzz_compiled_rules
-$(FUZZ_BUILD)/$1-$2/%.o: %.c $$(FUZZ_HEADERS) configs/$1.h | fuzz-deps
+$(FUZZ_BUILD)/$1-$2/%.o: %.c $$(FUZZ_HEADERS) configs/$1.h $(call emb_config_h,$1,$2,subspace) | fuzz-deps
 	@mkdir -p $$(dir $$@)
-	$$(FUZZ_CC) $$(FUZZ_BASE) $$(FUZZ_LIB_WARNINGS) $(call fuzz_real_flag,$2) -I. -DBS_SCENE_CONFIG='"configs/$1.h"' \
+	$$(FUZZ_CC) -I$(EMB_CONFIG)/$1.$2.subspace $$(FUZZ_BASE) $$(FUZZ_LIB_WARNINGS) -I. \
 	    -fsanitize=fuzzer-no-link -c -o $$@ $$<
 
-$(FUZZ_BUILD)/$1-$2/tests/fuzz/%.o: tests/fuzz/%.c $$(FUZZ_HEADERS) configs/$1.h | fuzz-deps
+$(FUZZ_BUILD)/$1-$2/tests/fuzz/%.o: tests/fuzz/%.c $$(FUZZ_HEADERS) configs/$1.h $(call emb_config_h,$1,$2,subspace) | fuzz-deps
 	@mkdir -p $$(dir $$@)
-	$$(FUZZ_CC) $$(FUZZ_BASE) $$(WARNINGS) $(call fuzz_real_flag,$2) -I. -DBS_SCENE_CONFIG='"configs/$1.h"' \
+	$$(FUZZ_CC) -I$(EMB_CONFIG)/$1.$2.subspace $$(FUZZ_BASE) $$(WARNINGS) -I. \
 	    -fsanitize=fuzzer-no-link -c -o $$@ $$<
 
 $(FUZZ_BUILD)/fuzz_step_$1: $(FUZZ_BUILD)/$1-$2/tests/fuzz/fuzz_step.o $(CORE_SRC:%.c=$(FUZZ_BUILD)/$1-$2/%.o)
@@ -116,11 +117,11 @@ fuzz-short-%: fuzz-build
 FUZZ_COV := $(BUILD)/fuzz-cov
 FUZZ_COV_FLAGS := -std=c99 -O0 -g -ffp-contract=off -fno-math-errno -fprofile-instr-generate -fcoverage-mapping \
                   -Icore/include -Icore/src -Iport -Iport/host -Ihost/lib -Itests/fuzz -DFUZZ_CONFIGS='"$(CURDIR)/configs"' -Wno-double-promotion
-fuzz-coverage:
+fuzz-coverage: $(BUILD)/double/include/bs_build_config.h
 	@sh host/deps.sh $(FUZZ_COV_PACKAGES)
 	@mkdir -p $(FUZZ_COV)
-	$(FUZZ_CC) $(FUZZ_COV_FLAGS) -DBS_REAL_FLOAT=0 -fsanitize=fuzzer -o $(FUZZ_COV)/fuzz_scene tests/fuzz/fuzz_scene.c $(FUZZ_SRC) $(HOST_LIBS)
-	$(FUZZ_CC) $(FUZZ_COV_FLAGS) -DBS_REAL_FLOAT=0 -fsanitize=fuzzer -o $(FUZZ_COV)/fuzz_step tests/fuzz/fuzz_step.c $(FUZZ_SRC) $(HOST_LIBS)
+	$(FUZZ_CC) $(FUZZ_COV_FLAGS) -I$(BUILD)/double/include -fsanitize=fuzzer -o $(FUZZ_COV)/fuzz_scene tests/fuzz/fuzz_scene.c $(FUZZ_SRC) $(HOST_LIBS)
+	$(FUZZ_CC) $(FUZZ_COV_FLAGS) -I$(BUILD)/double/include -fsanitize=fuzzer -o $(FUZZ_COV)/fuzz_step tests/fuzz/fuzz_step.c $(FUZZ_SRC) $(HOST_LIBS)
 	@set -e; for t in fuzz_scene fuzz_step; do \
 	    seeds=tests/fuzz/corpus/fuzz_step; [ $$t = fuzz_scene ] && seeds=tests/fuzz/corpus/fuzz_scene; \
 	    mkdir -p $(FUZZ_BUILD)/corpus/$$t; \
@@ -158,7 +159,7 @@ VG_OBJ := $(BUILD)/double
 $(VG_OBJ)/tests/fuzz/vg_test_sim: tests/fuzz/vg_test_sim.c tests/test_sim.c $(VG_OBJ)/tests/support.o \
         $(HOST_LIB_SRC:%.c=$(VG_OBJ)/%.o) $(CORE_SRC:%.c=$(VG_OBJ)/%.o) | deps-test
 	@mkdir -p $(dir $@)
-	$(CC) -O2 -g $(BASE_CFLAGS:-DBS_REAL_FLOAT%=) -DBS_REAL_FLOAT=0 -Icore/include -Icore/src -Iport -Iport/host -Ihost/lib -Itests \
+	$(CC) -O2 -g $(BASE_CFLAGS) -I$(VG_OBJ)/include -Icore/include -Icore/src -Iport -Iport/host -Ihost/lib -Itests \
 	    -o $@ tests/fuzz/vg_test_sim.c $(filter %.o,$^) $(TEST_LIBS)
 
 robustness-deps:

@@ -32,3 +32,10 @@ void support_assert_close(const char *what, double actual, double expected, doub
         _fail(file, line);
     }
 }
+
+bs_step_report support_report(const bs_sim *sim)
+{
+    bs_step_report report;
+    assert_int_equal(bs_sim_get_report(sim, &report), BS_OK);
+    return report;
+}

@@ -9,6 +9,7 @@
 #include <cmocka.h>
 
 #include "beamslider.h"
+#include "bs_monitor.h"
 #include "scene_build.h"
 
 /* Machine epsilon of the precision under test. */
@@ -19,6 +20,9 @@ void support_load(const char *path, scene_file *file, bs_scene *scene, scene_mod
 
 /* Rebuilds scene from file->params after a test changed them; fails on error. */
 void support_build(scene_file *file, bs_scene *scene, scene_model *model);
+
+/* The last step's contact report; fails the test if the sim refuses it. */
+bs_step_report support_report(const bs_sim *sim);
 
 /* Fails unless |actual - expected| <= abs_tol + rel_tol |expected|, printing
  * what was compared, both values and the tolerance. */

@@ -44,7 +44,7 @@ static measured simulate_mode(int k, double h)
     for (n = 1; n <= steps; ++n) {
         double value;
         assert_int_equal(bs_sim_step(&sim), BS_OK);
-        assert_int_equal(bs_sim_report(&sim)->active, 0); /* truly free */
+        assert_int_equal(support_report(&sim).active, 0); /* truly free */
         bs_sim_get_state(&sim, q, NULL, NULL, NULL);
         value = (double)q[k];
         if (prev < 0.0 && value >= 0.0) { /* upward crossing, linear interpolation */

@@ -44,8 +44,8 @@ static void first_impact(unsigned corners, double *before, double *after)
         bs_sim_get_state(&sim, NULL, NULL, NULL, velocity);
         *before = (double)velocity[1];
         assert_int_equal(bs_sim_step(&sim), BS_OK);
-        if (bs_sim_report(&sim)->active) {
-            assert_int_equal(bs_sim_report(&sim)->active, corners);
+        if (support_report(&sim).active) {
+            assert_int_equal(support_report(&sim).active, corners);
             bs_sim_get_state(&sim, NULL, NULL, NULL, velocity);
             *after = (double)velocity[1];
             return;
@@ -112,8 +112,8 @@ static double slide(double friction, double tilt_deg, double seconds)
     x0 = (double)pose[0];
     for (n = 0; n < steps; ++n) {
         assert_int_equal(bs_sim_step(&sim), BS_OK);
-        assert_int_equal(bs_sim_report(&sim)->active, 0x9u);
-        assert_true(bs_sim_report(&sim)->converged);
+        assert_int_equal(support_report(&sim).active, 0x9u);
+        assert_true(support_report(&sim).converged);
     }
     bs_sim_get_state(&sim, NULL, NULL, pose, NULL);
     return (double)pose[0] - x0;

@@ -29,6 +29,7 @@ static sweep_options small_sweep(double from, double to, double step, int down)
     options.hold = 3;
     options.record = 2;
     options.dt = file.params.dt;
+    options.solver = scene_solver(&file.params);
     return options;
 }
 

@@ -3,14 +3,16 @@
  * Every array in the core is sized here, so a bs_sim has a size known at
  * compile time and the caller can place it statically. The host build uses
  * generous limits, a run-time mode count and every feature. An embedded build
- * is compiled against exactly one scene: -DBS_SCENE_CONFIG='"configs/NAME.h"'
- * includes that scene's generated header (host: `beamslider gen`), which fixes
- * the mode count and piece count and switches off what the scene does not
- * need. Switches are always defined to 0 or 1 and tested with #if (-Wundef
- * catches a misspelt one).
+ * is compiled against exactly one scene: its generated bs_build_config.h
+ * defines BS_SCENE_CONFIG (e.g. "configs/NAME.h", the scene's header written
+ * by `beamslider gen`), which fixes the mode count and piece count and switches
+ * off what the scene does not need. Switches are always defined to 0 or 1 and
+ * tested with #if (-Wundef catches a misspelt one).
  */
 #ifndef BS_CONFIG_H
 #define BS_CONFIG_H
+
+#include "bs_build_config.h"
 
 #ifdef BS_SCENE_CONFIG
 #include BS_SCENE_CONFIG
@@ -30,8 +32,8 @@
 #endif
 
 /* Mode shapes are piecewise polynomials of this many coefficients (degree 7),
- * fitted on the host; see core/src/bs_shape.h (whose Horner loop is written out
- * for exactly 8). */
+ * fitted on the host (core/src/bs_shape.c writes its Horner loop out for
+ * exactly 8). */
 #define BS_SHAPE_COEFS 8
 
 /* Largest number of polynomial pieces over the beam length. */

@@ -1,15 +1,17 @@
 /* bs_real.h - the one place that decides the working precision of the core.
  *
- * Build with -DBS_REAL_FLOAT=1 for float, -DBS_REAL_FLOAT=0 for double (the
- * Makefile does this from REAL=float|double). Every floating literal in core/
- * goes through BS_R() so that a float build never silently computes in double
- * (the build adds -Wdouble-promotion -Wfloat-conversion to catch slips).
+ * BS_REAL_FLOAT comes from the generated bs_build_config.h (1: float, 0:
+ * double; make REAL=float|double). Every floating literal in core/ goes
+ * through BS_R() so that a float build never silently computes in double (the
+ * build adds -Wdouble-promotion -Wfloat-conversion to catch slips).
  */
 #ifndef BS_REAL_H
 #define BS_REAL_H
 
-#ifndef BS_REAL_FLOAT
-#error "BS_REAL_FLOAT must be defined to 0 (double) or 1 (float)"
+#include "bs_build_config.h"
+
+#if !defined(BS_REAL_FLOAT) || (BS_REAL_FLOAT != 0 && BS_REAL_FLOAT != 1)
+#error "bs_build_config.h must define BS_REAL_FLOAT to 0 (double) or 1 (float)"
 #endif
 
 #if BS_REAL_FLOAT

@@ -108,8 +108,11 @@ static int certainly_open(const bs_scene *scene, const bs_contact_frame *frame, 
     return worst > rounding;
 }
 
-/* Appends the evaluated corner to the active set if g_N < 0. */
-static void add_corner(const bs_scene *scene, const bs_contact_frame *frame, int corner,
+/* Appends the evaluated corner to the active set if g_N < 0. Returns 1 if
+ * the corner is on the wrong side of the beam's axis (zeta d_z < -h/2: more
+ * than h/2 into the beam, which no step of a held contact reaches; the slider
+ * has left the beam), else 0. */
+static int add_corner(const bs_scene *scene, const bs_contact_frame *frame, int corner,
                        const corner_point *p, bs_contact_set *set,
                        bs_real base_term[BS_MAX_CONTACTS][BS_ROWS])
 {
@@ -126,7 +129,9 @@ static void add_corner(const bs_scene *scene, const bs_contact_frame *frame, int
     d_x = zeta * hh * w_slope;
     d_z = p->z - frame->base.displacement - p->w - zeta * hh;
     if (!(zeta * d_z - hh * w_slope * w_slope < BS_R(0.0)))
-        return;
+        return 0;
+    if (zeta * d_z + hh < BS_R(0.0))
+        return 1;
     cos_alpha = BS_R(1.0) / bs_sqrt(BS_R(1.0) + w_slope * w_slope);
     sin_alpha = w_slope * cos_alpha;
     n_x = -zeta * sin_alpha;
@@ -168,6 +173,7 @@ static void add_corner(const bs_scene *scene, const bs_contact_frame *frame, int
 #endif
     for (k = 0; k < n; ++k)
         set->dir_beam[BS_ROWS * a][k] = coef_nn * phi[k] + coef_ns * slope[k];
+    return 0;
 }
 
 static void add_stop(const bs_scene *scene, int id, bs_real sign, bs_contact_set *set,
@@ -211,8 +217,8 @@ static void rotation(bs_real beta, bs_real *cos_beta, bs_real *sin_beta)
 }
 #endif
 
-void bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
-                       bs_contact_set *set, bs_real base_term[BS_MAX_CONTACTS][BS_ROWS])
+bs_status bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
+                            bs_contact_set *set, bs_real base_term[BS_MAX_CONTACTS][BS_ROWS])
 {
     bs_real cos_beta = BS_R(1.0), sin_beta = BS_R(0.0);
     bs_real q_slope = BS_R(0.0), q_jump = BS_R(0.0);
@@ -244,14 +250,15 @@ void bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
             beam_under_corner(scene, frame, &at[bottom]);
     }
     for (corner = 0; corner < BS_CORNERS; ++corner)
-        if (!open[corner])
-            add_corner(scene, frame, corner, &at[corner], set, base_term);
+        if (!open[corner] && add_corner(scene, frame, corner, &at[corner], set, base_term))
+            return BS_E_ESCAPED;
     if (frame->stops) {
         if (frame->x_stops < scene->stop_min)
             add_stop(scene, BS_STOP_LEFT, BS_R(1.0), set, base_term);
         if (frame->x_stops > scene->stop_max)
             add_stop(scene, BS_STOP_RIGHT, BS_R(-1.0), set, base_term);
     }
+    return BS_OK;
 }
 
 /* W_r^T u + w~_r of active contact a, row r. */

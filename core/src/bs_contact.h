@@ -2,7 +2,7 @@
 #ifndef BS_CONTACT_H
 #define BS_CONTACT_H
 
-#include "beamslider.h"
+#include "bs_sim_layout.h"
 #include "bs_excitation.h"
 
 /* Relative compliance added to the diagonal of G, normal and tangential rows
@@ -24,8 +24,9 @@ typedef struct bs_contact_frame {
 
 /* Finds the contacts with g_N < 0 and fills set->count, id, mu (with
  * friction) and the force directions W; base_term[a] receives w~ = dg/dt of
- * active contact a. */
-void bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
+ * active contact a. Returns BS_OK, or BS_E_ESCAPED when a slot corner is on
+ * the wrong side of the beam's axis (the slider has left the beam). */
+bs_status bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
                        bs_contact_set *set, bs_real base_term[BS_MAX_CONTACTS][BS_ROWS]);
 
 /* The free velocity c of the contact problem, set->free_velocity: per active

@@ -7,6 +7,7 @@
  *               (x_C, x_c_low) so that float keeps the few-ulp drift per period
  */
 #include "bs_monitor.h"
+#include "bs_sim_internal.h"
 
 static void start_period(bs_monitor *monitor, const bs_sim *sim, bs_real w)
 {
@@ -16,19 +17,32 @@ static void start_period(bs_monitor *monitor, const bs_sim *sim, bs_real w)
     monitor->x_start_low = sim->x_c_low;
 }
 
-void bs_monitor_init(bs_monitor *monitor, const bs_sim *sim)
+bs_status bs_monitor_init(bs_monitor *monitor, const bs_sim *sim)
 {
+    const bs_status status = bs_sim_status(sim);
+    if (status != BS_OK)
+        return status;
+    if (!monitor)
+        return BS_E_NULL;
     monitor->last_phase = sim->phase;
     monitor->amplitude = BS_R(0.0);
     monitor->transport = BS_R(0.0);
     monitor->periods = 0;
     start_period(monitor, sim, bs_sim_sensor(sim));
+    return BS_OK;
 }
 
 int bs_monitor_update(bs_monitor *monitor, const bs_sim *sim)
 {
-    const bs_real w = bs_sim_sensor(sim);
-    const int wrapped = sim->phase < monitor->last_phase;
+    bs_real w;
+    int wrapped;
+    const bs_status status = bs_sim_status(sim);
+    if (status != BS_OK)
+        return status;
+    if (!monitor)
+        return BS_E_NULL;
+    w = bs_sim_sensor(sim);
+    wrapped = sim->phase < monitor->last_phase;
 
     monitor->last_phase = sim->phase;
     if (w > monitor->w_max)

@@ -55,6 +55,9 @@
  * (stalled: e is at the floor the precision reaches for this G). The residual
  * returned is the one of the P returned, whether converged or not
  * (MODEL.md 9.5: report it, never hide it).
+ * With measure_residual off the solve is exactly max_sweeps sweeps: no
+ * residual, no stop on it, no subspace step (which picks its result by the
+ * residual); the report says "not measured" (residual -1, converged -1).
  */
 #include "bs_pgs.h"
 #include "bs_port.h"
@@ -172,16 +175,9 @@ static void solve_contact(bs_contact_set *set, const bs_real *step, int a)
 #endif
 }
 
-/* xi = G P + c, every row. */
-static void velocities(const bs_contact_set *set, bs_real *xi)
-{
-    int a;
-    for (a = 0; a < set->count; ++a)
-        velocity(set, a, &xi[ROWS * a]);
-}
-
-/* Natural-map residual of the current P, from its xi. */
-static bs_real residual_of(const bs_contact_set *set, const bs_real *step, const bs_real *xi)
+/* Natural-map residual of the current P; xi receives xi = G P + c of every
+ * row on the way. */
+static bs_real residual_of(const bs_contact_set *set, const bs_real *step, bs_real *xi)
 {
     bs_real sum = BS_R(0.0);
     int a, r;
@@ -189,6 +185,7 @@ static bs_real residual_of(const bs_contact_set *set, const bs_real *step, const
     for (a = 0; a < set->count; ++a) {
         const bs_real *p = &set->percussion[ROWS * a];
         bs_real projected[ROWS];
+        velocity(set, a, &xi[ROWS * a]);
         prox(set, a, step[a], &xi[ROWS * a], p, projected);
         for (r = 0; r < ROWS; ++r)
             sum += bs_fabs(p[r] - projected[r]);
@@ -199,7 +196,6 @@ static bs_real residual_of(const bs_contact_set *set, const bs_real *step, const
 static bs_real residual(const bs_contact_set *set, const bs_real *step)
 {
     bs_real xi[MAX_ROWS];
-    velocities(set, xi);
     return residual_of(set, step, xi);
 }
 
@@ -394,7 +390,6 @@ static void try_subspace(bs_contact_set *set, const bs_real *step, bs_real *best
             tried[count][j] = mode[j];
         for (j = 0; j < rows; ++j)
             set->percussion[j] = trial[j];
-        velocities(set, xi);
         trial_residual = residual_of(set, step, xi);
         if (trial_residual < *best_residual) {
             *best_residual = trial_residual;
@@ -410,32 +405,39 @@ static void try_subspace(bs_contact_set *set, const bs_real *step, bs_real *best
 
 #endif /* BS_WITH_SUBSPACE */
 
-bs_pgs_result bs_pgs_solve(bs_contact_set *set, int max_sweeps, bs_real tol_rel, bs_real tol_abs)
+void bs_pgs_solve(bs_contact_set *set, const bs_solver_options *options, bs_step_report *report)
 {
-    bs_pgs_result result;
     bs_real step[BS_MAX_CONTACTS];
     bs_real tolerance;
     bs_real previous = BS_R(0.0);
     int a;
 
-    step_sizes(set, step);
-    tolerance = tol_rel * percussion_scale(set, step) + tol_abs;
-    result.sweeps = 0;
+    step_sizes(set, step); /* the prox fall-back of solve_contact needs them too */
+    report->sweeps = 0;
+    if (!options->measure_residual) { /* a fixed number of plain sweeps, nothing measured */
+        for (; report->sweeps < options->max_sweeps; ++report->sweeps)
+            for (a = 0; a < set->count; ++a)
+                solve_contact(set, step, a);
+        report->residual = BS_R(-1.0);
+        report->converged = -1;
+        return;
+    }
+    tolerance = options->tol_rel * percussion_scale(set, step) + options->tol_abs;
     for (;;) { /* at least one sweep: the warm start is not trusted unchecked */
         for (a = 0; a < set->count; ++a)
             solve_contact(set, step, a);
-        ++result.sweeps;
-        result.residual = residual(set, step);
+        ++report->sweeps;
+        report->residual = residual(set, step);
 #if BS_WITH_SUBSPACE
-        if (result.residual > tolerance && set->count > 1)
-            try_subspace(set, step, &result.residual);
+        if (report->residual > tolerance && set->count > 1)
+            try_subspace(set, step, &report->residual);
 #endif
-        result.converged = result.residual <= tolerance;
+        report->converged = report->residual <= tolerance;
         /* stop at the cap, or when a round made no progress: then the
          * residual sits at what the precision can resolve for this G */
-        if (result.converged || result.sweeps >= max_sweeps
-            || (result.sweeps > 1 && !(result.residual < previous)))
-            return result;
-        previous = result.residual;
+        if (report->converged || report->sweeps >= options->max_sweeps
+            || (report->sweeps > 1 && !(report->residual < previous)))
+            return;
+        previous = report->residual;
     }
 }

@@ -1,10 +1,15 @@
 /* bs_scene.c - validation of a scene before the core uses it.
  *
- * The host validates physical parameters with file and line (host/lib/scene_ini.c);
- * this is the core's own guard, for scenes that come from anywhere (a
- * generated header, a corrupted flash page, a caller's struct).
+ * The host validates physical parameters with file and line
+ * (host/lib/scene_ini.c); this is the core's own guard, for scenes that come
+ * from anywhere (a generated header, a corrupted flash page, a caller's
+ * struct). Every field has a rule in bs_scene_fields.h: the generic rules
+ * (finite, positive, ...) are applied to every used element of every field
+ * from that table; the fields whose validity depends on others (rule CROSS)
+ * are checked by hand below. The first failure names its field.
  */
 #include "beamslider.h"
+#include "bs_sim_internal.h"
 
 /* NaN and infinity give x - x != 0; no libm needed. */
 static int is_finite(bs_real x)
@@ -19,49 +24,81 @@ static int fail(const char **field, const char *name)
     return 1;
 }
 
-static int check_modes(const bs_scene *s, const char **field)
-{
-    int i;
-    int j;
-    int c;
+enum rule { RULE_FINITE, RULE_POSITIVE, RULE_NONNEGATIVE, RULE_UNIT };
 
+static int obeys(bs_real x, enum rule rule)
+{
+    switch (rule) {
+    case RULE_POSITIVE: return is_finite(x) && x > BS_R(0.0);
+    case RULE_NONNEGATIVE: return is_finite(x) && x >= BS_R(0.0);
+    case RULE_UNIT: return x >= BS_R(0.0) && x <= BS_R(1.0);
+    default: return is_finite(x);
+    }
+}
+
+/* Every used element [i][j][k] (i < used1, ...) of an array declared with
+ * sizes [.][size2][size3], seen as flat values. */
+static int all_obey(const bs_real *values, int used1, int size2, int used2, int size3, int used3,
+                    enum rule rule)
+{
+    int i, j, k;
+    for (i = 0; i < used1; ++i)
+        for (j = 0; j < used2; ++j)
+            for (k = 0; k < used3; ++k)
+                if (!obeys(values[(i * size2 + j) * size3 + k], rule))
+                    return 0;
+    return 1;
+}
+
+/* The generic rules, from the field table (REAL fields; CROSS is by hand). */
+#define RULE_OF_FINITE RULE_FINITE
+#define RULE_OF_POSITIVE RULE_POSITIVE
+#define RULE_OF_NONNEGATIVE RULE_NONNEGATIVE
+#define RULE_OF_UNIT RULE_UNIT
+#define RULE_OF_CROSS RULE_FINITE /* not used: CHECKED_CROSS is 0 */
+#define CHECKED_FINITE 1
+#define CHECKED_POSITIVE 1
+#define CHECKED_NONNEGATIVE 1
+#define CHECKED_UNIT 1
+#define CHECKED_CROSS 0
+#define CHECK_REAL(name, d1, d2, d3, rule)                                                         \
+    if (CHECKED_##rule                                                                             \
+        && !all_obey((const bs_real *)&s->name, BS_USED_##d1(s), BS_SIZE_##d2, BS_USED_##d2(s),    \
+                     BS_SIZE_##d3, BS_USED_##d3(s), RULE_OF_##rule))                                \
+        return fail(field, #name);
+#define CHECK_INT(name, d1, d2, d3, rule)
+#define CHECK_U64(name, d1, d2, d3, rule)
+#define CHECK_FIELD(kind, name, d1, d2, d3, rule, unit, meaning) CHECK_##kind(name, d1, d2, d3, rule)
+
+static int check_fields(const bs_scene *s, const char **field)
+{
+    BS_SCENE_FIELDS(CHECK_FIELD)
+    return 0;
+}
+
+/* The counts first: every other check loops over them. */
+static int check_counts(const bs_scene *s, const char **field)
+{
     if (s->n_modes < 0 || s->n_modes > BS_MAX_MODES)
         return fail(field, "n_modes");
     if (s->shape_pieces < 1 || s->shape_pieces > BS_SHAPE_MAX_PIECES)
         return fail(field, "shape_pieces");
-    for (i = 0; i < s->n_modes; ++i) {
-        if (!is_finite(s->omega_sq[i]) || !(s->omega_sq[i] > BS_R(0.0)))
-            return fail(field, "omega_sq");
-        if (!is_finite(s->damping[i]) || !(s->damping[i] >= BS_R(0.0)))
-            return fail(field, "damping");
-        if (!is_finite(s->gamma[i]))
-            return fail(field, "gamma");
-        if (!is_finite(s->phi_sensor[i]))
-            return fail(field, "phi_sensor");
-        for (j = 0; j < s->n_modes; ++j)
-            if (!is_finite(s->stretch[i][j]) || s->stretch[i][j] != s->stretch[j][i])
-                return fail(field, "stretch");
-        for (j = 0; j < s->shape_pieces; ++j)
-            for (c = 0; c < BS_SHAPE_COEFS; ++c)
-                if (!is_finite(s->shape_coef[j][i][c]))
-                    return fail(field, "shape_coef");
-    }
     return 0;
 }
 
-static int check_geometry(const bs_scene *s, const char **field)
+static int check_cross(const bs_scene *s, const char **field)
 {
-    int i;
+    int i, j;
 
-    if (!is_finite(s->length) || !(s->length > BS_R(0.0)))
-        return fail(field, "length");
+    for (i = 0; i < s->n_modes; ++i)
+        for (j = 0; j < s->n_modes; ++j)
+            if (!is_finite(s->stretch[i][j]) || s->stretch[i][j] != s->stretch[j][i])
+                return fail(field, "stretch");
     /* shape_scale must be shape_pieces / length (to rounding) */
     if (!is_finite(s->shape_scale)
         || !(s->shape_scale * s->length >= (bs_real)s->shape_pieces * (BS_R(1.0) - BS_R(1e-6))
              && s->shape_scale * s->length <= (bs_real)s->shape_pieces * (BS_R(1.0) + BS_R(1e-6))))
         return fail(field, "shape_scale");
-    if (!is_finite(s->half_thickness) || !(s->half_thickness > BS_R(0.0)))
-        return fail(field, "half_thickness");
     for (i = 0; i < BS_CORNERS; ++i)
         if (!is_finite(s->corner[i][0]) || !is_finite(s->corner[i][1]))
             return fail(field, "corner");
@@ -71,33 +108,8 @@ static int check_geometry(const bs_scene *s, const char **field)
         || !(s->corner[3][1] - s->corner[2][1] >= BS_R(2.0) * s->half_thickness * (BS_R(1.0) - BS_R(16.0) * BS_REAL_EPS))
         || !(s->corner[0][0] < s->corner[3][0]) || !(s->corner[1][0] < s->corner[2][0]))
         return fail(field, "corner");
-    if (!is_finite(s->com_offset))
-        return fail(field, "com_offset");
     if (!(s->stop_min >= BS_R(0.0) && s->stop_min < s->stop_max && s->stop_max <= s->length))
         return fail(field, "stop_min/stop_max");
-    return 0;
-}
-
-static int check_slider_contact(const bs_scene *s, const char **field)
-{
-    if (!is_finite(s->mass_inv) || !(s->mass_inv > BS_R(0.0)))
-        return fail(field, "mass_inv");
-    if (!is_finite(s->inertia_inv) || !(s->inertia_inv >= BS_R(0.0)))
-        return fail(field, "inertia_inv");
-    if (!is_finite(s->gravity[0]) || !is_finite(s->gravity[1]))
-        return fail(field, "gravity");
-    if (!is_finite(s->mu) || !(s->mu >= BS_R(0.0)))
-        return fail(field, "mu");
-    if (!(s->e_n >= BS_R(0.0) && s->e_n <= BS_R(1.0)))
-        return fail(field, "e_n");
-    return 0;
-}
-
-static int check_numerics(const bs_scene *s, const char **field)
-{
-    if (!is_finite(s->base_accel) || !is_finite(s->base_velocity)
-        || !is_finite(s->base_displacement))
-        return fail(field, "base_accel/base_velocity/base_displacement");
     /* bs_sim_init starts the slider at z_C = base_displacement - com_offset:
      * each finite is not enough, their sum must be too */
     if (!is_finite(s->base_displacement - s->com_offset))
@@ -105,25 +117,14 @@ static int check_numerics(const bs_scene *s, const char **field)
     /* at least two steps per excitation period: f_ex dt < 1/2 */
     if (s->phase_step_half == 0 || s->phase_step_half >= ((uint64_t)1 << 62))
         return fail(field, "phase_step_half");
-    if (!is_finite(s->dt) || !(s->dt > BS_R(0.0)))
-        return fail(field, "dt");
     if (s->implicit != 0 && s->implicit != 1)
         return fail(field, "implicit");
     if (!(s->theta >= BS_R(0.5) && s->theta <= BS_R(1.0)) || (!s->implicit && s->theta != BS_R(0.5)))
         return fail(field, "theta");
-    {
-        int k;
-        for (k = 0; k < s->n_modes; ++k)
-            if (!(s->mode_gain[k] > BS_R(0.0) && s->mode_gain[k] <= BS_R(1.0))
-                || (!s->implicit && s->mode_gain[k] != BS_R(1.0)))
-                return fail(field, "mode_gain");
-    }
-    if (s->pgs_max_sweeps < 1)
-        return fail(field, "pgs_max_sweeps");
-    if (!is_finite(s->pgs_tol_rel) || !(s->pgs_tol_rel >= BS_R(0.0)))
-        return fail(field, "pgs_tol_rel");
-    if (!is_finite(s->pgs_tol_abs) || !(s->pgs_tol_abs >= BS_R(0.0)))
-        return fail(field, "pgs_tol_abs");
+    for (i = 0; i < s->n_modes; ++i)
+        if (!(s->mode_gain[i] > BS_R(0.0) && s->mode_gain[i] <= BS_R(1.0))
+            || (!s->implicit && s->mode_gain[i] != BS_R(1.0)))
+            return fail(field, "mode_gain");
     return 0;
 }
 
@@ -157,14 +158,15 @@ static int check_compiled_features(const bs_scene *s, const char **field)
     return 0;
 }
 
-bs_status bs_scene_check(const bs_scene *scene, const char **field)
+bs_status bs_scene_check_(uint32_t tag, size_t scene_size, const bs_scene *scene, const char **field)
 {
     int i;
 
     if (!scene)
         return BS_E_NULL;
-    if (check_modes(scene, field) || check_geometry(scene, field)
-        || check_slider_contact(scene, field) || check_numerics(scene, field)
+    if (bs_build_matches(tag, sizeof(bs_sim), scene_size) != BS_OK)
+        return BS_E_BUILD;
+    if (check_counts(scene, field) || check_fields(scene, field) || check_cross(scene, field)
         || check_compiled_features(scene, field))
         return BS_E_SCENE;
     /* explicit stability limit of the smooth part: omega_max dt < 2 */

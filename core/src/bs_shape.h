@@ -3,7 +3,7 @@
 #ifndef BS_SHAPE_H
 #define BS_SHAPE_H
 
-#include "beamslider.h"
+#include "bs_sim_layout.h"
 
 /* phi[k] = phi_k(x) [1/sqrt(kg)] and slope[k] = d phi_k / dx [1/(m sqrt(kg))]
  * for k < n_modes. Outside [0, L] the beam is inside a clamp, which moves

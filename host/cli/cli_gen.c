@@ -1,91 +1,182 @@
 /* cli_gen.c - `beamslider gen SCENE.ini > configs/NAME.h`: a compile-time
  * scene for an embedded build.
  *
- * The header has two parts. The first, read by core/include/bs_config.h through
- * -DBS_SCENE_CONFIG='"configs/NAME.h"', fixes the sizes (mode count, shape
- * pieces) and switches off the features the scene does not need:
+ * The header has two parts. The first, read by core/include/bs_config.h when
+ * the build configuration names it (BS_SCENE_CONFIG), fixes the sizes (mode
+ * count, shape pieces) and switches off the features the scene does not need:
  *   friction     mu > 0            restitution  e_N > 0
  *   gravity      g > 0             rotation     [slider] rotation = free
  *   stretching   [numerics] stretching = on      pcs   [run] model = pcs
  *   implicit     [numerics] integrator = implicit
- * The second, seen once bs_scene is defined (include the header again after
- * beamslider.h), is the scene itself as
- * `static const bs_scene bs_compiled_scene` (const: it stays in flash).
- * Values are printed in double with 17 digits inside BS_R(), so that a float
- * build rounds each once; the shape table is fitted twice, at the float and at
- * the double tolerance, because float needs fewer pieces.
- * The output depends only on the scene file, not on this binary's bs_real.
+ * and records the run and the solver settings the scene file describes. The
+ * second, seen once bs_scene is defined (include the header again after
+ * beamslider.h), is the scene itself as `static const bs_scene
+ * bs_compiled_scene` (const: it stays in flash), a positional initialiser
+ * printed field by field from the field table (core/include/bs_scene_fields.h),
+ * which C99 and C++ compilers both accept. Values are printed in double with
+ * 17 digits inside BS_R(), so that a float build rounds each once; the shape
+ * table is fitted twice, at the float and at the double tolerance, because
+ * float needs fewer pieces, and a field whose text differs between the two is
+ * printed under #if BS_REAL_FLOAT. Text from the scene file (name,
+ * description, the path) is printed as escaped C string literals only, never
+ * raw into a comment or code. The output depends only on the scene file, not
+ * on this binary's bs_real.
  */
 #include <ctype.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "cli.h"
 #include "scene_build.h"
 
+/* A growing text buffer. */
+typedef struct text {
+    char *data;
+    size_t length, size;
+} text;
+
+static void append(text *t, const char *format, ...)
+{
+    va_list args;
+    int need;
+    va_start(args, format);
+    need = vsnprintf(t->data ? t->data + t->length : NULL, t->data ? t->size - t->length : 0, format, args);
+    va_end(args);
+    if (need < 0)
+        abort();
+    if (!t->data || t->length + (size_t)need + 1 > t->size) {
+        t->size = 2 * (t->length + (size_t)need + 1);
+        t->data = realloc(t->data, t->size);
+        if (!t->data)
+            abort();
+        va_start(args, format);
+        vsnprintf(t->data + t->length, t->size - t->length, format, args);
+        va_end(args);
+    }
+    t->length += (size_t)need;
+}
+
+/* text as a C string literal: quotes, backslashes and question marks (no
+ * trigraphs) escaped, anything outside printable ASCII as a 3-digit octal
+ * escape (the next character can never extend it). */
+static void append_string(text *t, const char *value)
+{
+    const unsigned char *c;
+    append(t, "\"");
+    for (c = (const unsigned char *)value; *c; ++c) {
+        if (*c == '"' || *c == '\\' || *c == '?')
+            append(t, "\\%c", *c);
+        else if (*c >= 0x20 && *c < 0x7f)
+            append(t, "%c", *c);
+        else
+            append(t, "\\%03o", *c);
+    }
+    append(t, "\"");
+}
+
 /* BS_R(x) pastes an f for float, so x must read as a floating literal. */
-static void print_real(double value)
+static void append_real(text *t, double value)
 {
-    char text[40];
-    snprintf(text, sizeof text, "%.17g", value);
-    printf("BS_R(%s%s)", text, strpbrk(text, ".e") ? "" : ".0");
+    char number[40];
+    snprintf(number, sizeof number, "%.17g", value);
+    append(t, "BS_R(%s%s)", number, strpbrk(number, ".e") ? "" : ".0");
 }
 
-static void print_list(const double *values, int count)
+/* The used part [used1][used2][used3] of a field declared [.][size2][size3],
+ * flat in values, with one level of braces per dimension of rank. */
+static void append_values(text *t, const double *values, int rank, int used1, int size2, int used2,
+                          int size3, int used3)
 {
-    int i;
-    printf("{");
-    for (i = 0; i < count; ++i) {
-        printf(i ? ", " : " ");
-        print_real(values[i]);
+    int i, j, k;
+    if (rank == 0) {
+        append_real(t, values[0]);
+        return;
     }
-    printf(" }");
-}
-
-static void print_reals(const char *name, const double *values, int count)
-{
-    printf("    .%s = ", name);
-    print_list(values, count);
-    printf(",\n");
-}
-
-static void print_shape(const shape_fit *fit, int modes, double length)
-{
-    int j, k;
-    printf("    .shape_pieces = %d,\n    .shape_scale = ", fit->pieces);
-    print_real(fit->pieces / length);
-    printf(",\n    .shape_coef = {\n");
-    for (j = 0; j < fit->pieces; ++j) {
-        printf("        { /* piece %d */\n", j);
-        for (k = 0; k < modes; ++k) {
-            printf("            ");
-            print_list(fit->coef[j][k], BS_SHAPE_COEFS);
-            printf(",\n");
+    append(t, "{");
+    for (i = 0; i < used1; ++i) {
+        if (rank == 1) {
+            append(t, i ? ", " : " ");
+            append_real(t, values[i * size2 * size3]);
+            continue;
         }
-        printf("        },\n");
+        append(t, rank == 3 ? "\n        { /* %d */" : "\n        {", i);
+        for (j = 0; j < used2; ++j) {
+            if (rank == 2) {
+                append(t, j ? ", " : " ");
+                append_real(t, values[i * size2 * size3 + j * size3]);
+                continue;
+            }
+            append(t, "\n            {");
+            for (k = 0; k < used3; ++k) {
+                append(t, k ? ", " : " ");
+                append_real(t, values[(i * size2 + j) * size3 + k]);
+            }
+            append(t, " },");
+        }
+        append(t, rank == 3 ? "\n        }," : " },");
     }
-    printf("    },\n");
+    append(t, rank == 1 ? " }" : "\n    }");
 }
 
-static void print_switches(const scene_params *p, const scene_data *d, const char *guard)
+#define RANK_OF(d1, d2, d3) (BS_ARRAY_##d1 + BS_ARRAY_##d2 + BS_ARRAY_##d3)
+#define PRINT_REAL(t, d, name, d1, d2, d3)                                                           \
+    append_values(t, (const double *)&(d)->name, RANK_OF(d1, d2, d3), BS_USED_##d1(d), BS_SIZE_##d2, \
+                  BS_USED_##d2(d), BS_SIZE_##d3, BS_USED_##d3(d))
+#define PRINT_INT(t, d, name, d1, d2, d3) append(t, "%d", (d)->name)
+#define PRINT_U64(t, d, name, d1, d2, d3) append(t, "UINT64_C(%llu)", (unsigned long long)(d)->name)
+
+/* One field's initialiser: under #if BS_REAL_FLOAT where the float and the
+ * double scene print differently (the shape table). */
+#define PRINT_FIELD(kind, name, d1, d2, d3, rule, unit, meaning)                                      \
+    {                                                                                               \
+        text single = { 0, 0, 0 }, twin = { 0, 0, 0 };                                              \
+        PRINT_##kind(&single, as_float, name, d1, d2, d3);                                          \
+        PRINT_##kind(&twin, as_double, name, d1, d2, d3);                                           \
+        append(out, "    /* %s%s%s%s */\n", #name, *unit ? " [" : "", unit, *unit ? "]" : "");    \
+        if (strcmp(single.data, twin.data) == 0)                                                    \
+            append(out, "    %s,\n", single.data);                                                  \
+        else                                                                                        \
+            append(out, "#if BS_REAL_FLOAT\n    %s,\n#else\n    %s,\n#endif\n", single.data, twin.data); \
+        free(single.data);                                                                          \
+        free(twin.data);                                                                            \
+    }
+
+static void append_initialiser(text *out, const scene_data *as_float, const scene_data *as_double)
 {
-    printf("#ifndef %s_CONFIG\n#define %s_CONFIG\n", guard, guard);
-    printf("#define BS_SCENE_NAME \"%s\"\n", p->name);
-    printf("#define BS_SCENE_MODES %d\n#define BS_MAX_MODES %d\n", d->n_modes, d->n_modes);
-    printf("#define BS_WITH_FRICTION %d\n", d->mu > 0.0);
-    printf("#define BS_WITH_RESTITUTION %d\n", d->e_n > 0.0);
-    printf("#define BS_WITH_GRAVITY %d\n", d->gravity[0] != 0.0 || d->gravity[1] != 0.0);
-    printf("#define BS_WITH_ROTATION %d\n", d->inertia_inv > 0.0);
-    printf("#define BS_WITH_STRETCHING %d\n", d->stretch_norm > 0.0);
-    printf("#define BS_WITH_PCS %d\n", p->model == BS_MODEL_PCS);
-    printf("#define BS_WITH_IMPLICIT %d\n", d->implicit);
-    printf("/* the run the scene file describes */\n");
-    printf("#define BS_SCENE_MODEL %s\n", p->model == BS_MODEL_PCS ? "BS_MODEL_PCS" : "BS_MODEL_FREE");
-    printf("#define BS_SCENE_START ");
-    print_real(p->s0);
-    printf(" /* s0 */\n");
-    printf("#define BS_SCENE_STEPS %.0fu /* t_end / dt */\n", floor(p->t_end / p->dt + 0.5));
-    printf("#endif\n\n");
+    BS_SCENE_FIELDS(PRINT_FIELD)
+}
+
+static void append_switches(text *t, const scene_params *p, const scene_model *model, const char *guard)
+{
+    const scene_data *d = &model->data;
+    append(t, "#ifndef %s_CONFIG\n#define %s_CONFIG\n", guard, guard);
+    append(t, "#define BS_SCENE_NAME ");
+    append_string(t, p->name);
+    append(t, "\n#define BS_SCENE_DESCRIPTION ");
+    append_string(t, p->description);
+    append(t, "\n#define BS_SCENE_MODES %d\n#define BS_MAX_MODES %d\n", d->n_modes, d->n_modes);
+    append(t, "#define BS_WITH_FRICTION %d\n", d->mu > 0.0);
+    append(t, "#define BS_WITH_RESTITUTION %d\n", d->e_n > 0.0);
+    append(t, "#define BS_WITH_GRAVITY %d\n", d->gravity[0] != 0.0 || d->gravity[1] != 0.0);
+    append(t, "#define BS_WITH_ROTATION %d\n", d->inertia_inv > 0.0);
+    append(t, "#define BS_WITH_STRETCHING %d\n", model->stretch_norm > 0.0);
+    append(t, "#define BS_WITH_PCS %d\n", p->model == BS_MODEL_PCS);
+    append(t, "#define BS_WITH_IMPLICIT %d\n", d->implicit);
+    append(t, "/* the run the scene file describes */\n");
+    append(t, "#define BS_SCENE_MODEL %s\n", p->model == BS_MODEL_PCS ? "BS_MODEL_PCS" : "BS_MODEL_FREE");
+    append(t, "#define BS_SCENE_START ");
+    append_real(t, p->s0);
+    append(t, " /* s0 */\n");
+    append(t, "#define BS_SCENE_STEPS %.0fu /* t_end / dt */\n", floor(p->t_end / p->dt + 0.5));
+    append(t, "/* its contact-solve settings ([solver]; bs_sim_set_solver) */\n");
+    append(t, "#define BS_SCENE_SOLVER_MAX_SWEEPS %d\n#define BS_SCENE_SOLVER_TOL_REL ", p->solver_max_sweeps);
+    append_real(t, p->solver_tol_rel);
+    append(t, "\n#define BS_SCENE_SOLVER_TOL_ABS ");
+    append_real(t, p->solver_tol_abs);
+    append(t, "\n#define BS_SCENE_SOLVER_RESIDUAL %d\n", p->solver_residual);
+    append(t, "#endif\n\n");
 }
 
 int cli_gen(int argc, char **argv)
@@ -94,8 +185,9 @@ int cli_gen(int argc, char **argv)
     static bs_scene scene;
     static scene_model model;
     static shape_fit fits[2]; /* [0] double, [1] float */
+    static scene_data as_precision[2];
+    text out = { 0, 0, 0 };
     char guard[64] = "BS_SCENE_";
-    const scene_data *d = &model.data;
     char err[1024];
     size_t g;
     int i, is_float;
@@ -108,73 +200,32 @@ int cli_gen(int argc, char **argv)
         cli_error("%s", err);
         return CLI_USAGE;
     }
-    for (is_float = 0; is_float < 2; ++is_float)
+    for (is_float = 0; is_float < 2; ++is_float) {
         if (shape_fit_modes(&model.modes, scene_fit_tolerance_for(is_float), &fits[is_float]) != 0) {
             cli_error("%s: the mode shapes need more than %d pieces", argv[0], BS_SHAPE_MAX_PIECES);
             return CLI_USAGE;
         }
+        as_precision[is_float] = model.data;
+        scene_data_set_shapes(&as_precision[is_float], &fits[is_float]);
+    }
     for (g = 9, i = 0; file.params.name[i] && g < sizeof guard - 8; ++i)
         guard[g++] = isalnum((unsigned char)file.params.name[i]) ? (char)toupper((unsigned char)file.params.name[i]) : '_';
     guard[g] = '\0';
 
-    printf("/* Compile-time scene \"%s\": %s\n", file.params.name, file.params.description);
-    printf(" * Generated by `beamslider gen %s`; do not edit: `make configs` regenerates it.\n", argv[0]);
-    printf(" * Build the core with -DBS_SCENE_CONFIG='\"THIS_FILE\"' and include it again after\n");
-    printf(" * beamslider.h to get `bs_compiled_scene` (docs/porting.md). */\n\n");
-    print_switches(&file.params, d, guard);
-    printf("#if BS_REAL_FLOAT\n#define BS_SHAPE_MAX_PIECES %d\n#else\n#define BS_SHAPE_MAX_PIECES %d\n#endif\n\n",
+    append(&out, "/* Compile-time scene BS_SCENE_NAME (below), generated from BS_SCENE_SOURCE by\n");
+    append(&out, " * `beamslider gen`; do not edit: `make configs` regenerates it. Build the core\n");
+    append(&out, " * with a build configuration naming this file (BS_SCENE_CONFIG) and include it\n");
+    append(&out, " * again after beamslider.h to get `bs_compiled_scene` (docs/porting.md). */\n\n");
+    append_switches(&out, &file.params, &model, guard);
+    append(&out, "#if BS_REAL_FLOAT\n#define BS_SHAPE_MAX_PIECES %d\n#else\n#define BS_SHAPE_MAX_PIECES %d\n#endif\n\n",
            fits[1].pieces, fits[0].pieces);
-    printf("#if defined(BS_SCENE_TYPE_DEFINED) && !defined(%s_DATA)\n#define %s_DATA\n", guard, guard);
-    printf("static const bs_scene bs_compiled_scene = {\n");
-    printf("    .n_modes = %d,\n", d->n_modes);
-    print_reals("omega_sq", d->omega_sq, d->n_modes);
-    print_reals("damping", d->damping, d->n_modes);
-    print_reals("gamma", d->gamma, d->n_modes);
-    printf("    .stretch = {\n");
-    for (i = 0; i < d->n_modes; ++i) {
-        printf("        ");
-        print_list(d->stretch[i], d->n_modes);
-        printf(",\n");
-    }
-    printf("    },\n");
-    print_reals("phi_sensor", d->phi_sensor, d->n_modes);
-    printf("#if BS_REAL_FLOAT\n");
-    print_shape(&fits[1], d->n_modes, d->length);
-    printf("#else\n");
-    print_shape(&fits[0], d->n_modes, d->length);
-    printf("#endif\n");
-    printf("    .length = "); print_real(d->length);
-    printf(",\n    .half_thickness = "); print_real(d->half_thickness);
-    printf(",\n    .corner = {");
-    for (i = 0; i < BS_CORNERS; ++i) {
-        printf(i ? ", { " : " { ");
-        print_real(d->corner[i][0]);
-        printf(", ");
-        print_real(d->corner[i][1]);
-        printf(" }");
-    }
-    printf(" },\n    .com_offset = "); print_real(d->com_offset);
-    printf(",\n    .stop_min = "); print_real(d->stop_min);
-    printf(",\n    .stop_max = "); print_real(d->stop_max);
-    printf(",\n    .mass_inv = "); print_real(d->mass_inv);
-    printf(",\n    .inertia_inv = "); print_real(d->inertia_inv);
-    printf(",\n");
-    print_reals("gravity", d->gravity, 2);
-    printf("    .mu = "); print_real(d->mu);
-    printf(",\n    .e_n = "); print_real(d->e_n);
-    printf(",\n    .base_accel = "); print_real(d->base_accel);
-    printf(",\n    .base_velocity = "); print_real(d->base_velocity);
-    printf(",\n    .base_displacement = "); print_real(d->base_displacement);
-    printf(",\n    .phase_step_half = UINT64_C(%llu),\n", (unsigned long long)d->phase_step_half);
-    printf("    .dt = "); print_real(d->dt);
-    printf(",\n    .implicit = %d,\n    .theta = ", d->implicit);
-    print_real(d->theta);
-    printf(",\n");
-    printf("    .mode_gain = ");
-    print_list(d->mode_gain, d->n_modes);
-    printf(",\n    .pgs_max_sweeps = %d,\n    .pgs_tol_rel = ", d->pgs_max_sweeps);
-    print_real(d->pgs_tol_rel);
-    printf(",\n    .pgs_tol_abs = "); print_real(d->pgs_tol_abs);
-    printf(",\n};\n#endif\n");
+    append(&out, "#if defined(BS_SCENE_TYPE_DEFINED) && !defined(%s_DATA)\n#define %s_DATA\n", guard, guard);
+    append(&out, "#define BS_SCENE_SOURCE ");
+    append_string(&out, argv[0]);
+    append(&out, "\nstatic const bs_scene bs_compiled_scene = {\n");
+    append_initialiser(&out, &as_precision[1], &as_precision[0]);
+    append(&out, "};\n#endif\n");
+    fputs(out.data, stdout);
+    free(out.data);
     return fflush(stdout) == 0 && !ferror(stdout) ? CLI_OK : CLI_FAILED;
 }

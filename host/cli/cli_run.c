@@ -23,7 +23,7 @@ static const struct override {
     { "--s0", "run", "s0" },
     { "--t-end", "run", "t_end" },
     { "--dt", "numerics", "dt" },
-    { "--pgs-iters", "numerics", "pgs_max_sweeps" },
+    { "--pgs-iters", "solver", "max_sweeps" },
     { 0, 0, 0 }
 };
 
@@ -143,6 +143,7 @@ int cli_run(int argc, char **argv)
     options.s0 = file.params.s0;
     options.t_end = file.params.t_end;
     options.dt = file.params.dt;
+    options.solver = scene_solver(&file.params);
     options.every = cli.every;
     options.csv = csv;
     options.periods = periods;

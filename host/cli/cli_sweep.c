@@ -33,7 +33,7 @@ static const struct override {
     const char *option, *section, *key;
 } overrides[] = {
     { "--dt", "numerics", "dt" },
-    { "--pgs-iters", "numerics", "pgs_max_sweeps" },
+    { "--pgs-iters", "solver", "max_sweeps" },
     { 0, 0, 0 }
 };
 
@@ -219,6 +219,7 @@ int cli_sweep(int argc, char **argv)
     }
     points = sweep_grid_size(options.from, options.to, options.step);
     options.dt = file.params.dt;
+    options.solver = scene_solver(&file.params);
     options.csv = csv;
     options.points = NULL;
     options.trace = trace;

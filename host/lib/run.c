@@ -19,12 +19,13 @@ const char run_periods_header[] = "t,amp_h,s,ds\n";
 
 static int write_row(FILE *csv, double t, const bs_sim *sim)
 {
-    const bs_step_report *report = bs_sim_report(sim);
+    bs_step_report report;
     bs_real slider[3];
+    bs_sim_get_report(sim, &report);
     bs_sim_get_state(sim, NULL, NULL, slider, NULL);
     return fprintf(csv, "%.9f,%.9e,%.9f,%.9e,%.9e,%u,%d,%.3e\n", t, (double)bs_sim_sensor(sim),
-                   (double)bs_sim_position(sim), (double)slider[1], (double)slider[2], report->active,
-                   report->sweeps, (double)report->residual) < 0;
+                   (double)bs_sim_position(sim), (double)slider[1], (double)slider[2], report.active,
+                   report.sweeps, (double)report.residual) < 0;
 }
 
 static void fail_write(run_result *result)
@@ -48,6 +49,8 @@ int run_scene(const bs_scene *scene, const run_options *options, run_result *res
     int i;
 
     result->status = bs_sim_init(&sim, scene, options->model, (bs_real)options->s0);
+    if (result->status == BS_OK)
+        result->status = bs_sim_set_solver(&sim, &options->solver);
     result->write_failed = 0;
     result->write_errno = 0;
     result->steps = 0;
@@ -71,19 +74,19 @@ int run_scene(const bs_scene *scene, const run_options *options, run_result *res
     progress_start(&bar, options->model == BS_MODEL_PCS ? "pcs" : "run");
 
     for (step = 1; step <= steps && !result->write_failed; ++step) {
-        const bs_step_report *report;
+        bs_step_report report;
         double s;
         result->status = bs_sim_step(&sim);
         if (result->status != BS_OK)
             break;
         result->steps = step;
-        report = bs_sim_report(&sim);
-        if (report->active) {
+        bs_sim_get_report(&sim, &report);
+        if (report.active) {
             ++result->contact_steps;
-            result->total_sweeps += (uint64_t)report->sweeps;
-            if (report->sweeps > result->max_pgs_sweeps)
-                result->max_pgs_sweeps = report->sweeps;
-            if (!report->converged)
+            result->total_sweeps += (uint64_t)report.sweeps;
+            if (report.sweeps > result->max_pgs_sweeps)
+                result->max_pgs_sweeps = report.sweeps;
+            if (report.converged == 0)
                 ++result->unconverged_steps;
         }
         s = (double)bs_sim_position(&sim);

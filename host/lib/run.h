@@ -13,6 +13,7 @@ typedef struct run_options {
     double s0;           /* start position (PCS: prescribed position) */
     double t_end;        /* [s] */
     double dt;           /* the scene's step in double (time = step * dt) [s] */
+    bs_solver_options solver; /* contact-solve settings */
     long every;          /* CSV row every this many steps */
     FILE *csv;           /* NULL: no CSV */
     FILE *periods;       /* NULL: no per-period CSV (run_periods_header) */
@@ -31,7 +32,7 @@ typedef struct run_result {
     int amp_periods;           /* periods behind amp_final_h */
     double wall_s;
     int max_pgs_sweeps;
-    uint64_t unconverged_steps;
+    uint64_t unconverged_steps; /* contact steps the solve reported unconverged (converged == 0) */
     uint64_t contact_steps;    /* steps with at least one active contact */
     uint64_t total_sweeps;     /* over contact steps */
     uint32_t hash;             /* bs_sim_hash of the final state */

@@ -1,7 +1,7 @@
 /* scene_build.c - modal precomputation and scene assembly, in double.
  *
- * From the parameters of MODEL.md 8, in double (scene_data), then rounded to
- * bs_real (to_core):
+ * From the parameters of docs/model.md 8, in double (scene_data), then rounded to
+ * bs_real (scene_data_round):
  *   omega_k, gamma_k, phi_k(4/7), I_ij          host/lib/modal.c
  *   mode-shape pieces                           host/lib/shape_fit.c
  *   S = sqrt(k_ax / 2L^2) I,  |S| by power iteration (S is positive semidefinite);
@@ -61,7 +61,7 @@ static double largest_eigenvalue(const double s[BS_MAX_MODES][BS_MAX_MODES], int
     return value;
 }
 
-static void compute_modes(const scene_params *p, const modal_set *modes, scene_data *d)
+static void compute_modes(const scene_params *p, const modal_set *modes, scene_data *d, double *stretch_norm)
 {
     const double stretch_scale = p->stretching ? sqrt(modes->k_axial_total / (2.0 * p->beam.length * p->beam.length)) : 0.0;
     int i;
@@ -78,7 +78,7 @@ static void compute_modes(const scene_params *p, const modal_set *modes, scene_d
             d->stretch[i][j] = stretch_scale * modes->slope_gram[i][j];
     }
     /* a hair above the true value: the stability check needs an upper bound */
-    d->stretch_norm = largest_eigenvalue(d->stretch, modes->n) * (1.0 + 1e-6);
+    *stretch_norm = largest_eigenvalue(d->stretch, modes->n) * (1.0 + 1e-6);
 }
 
 static void compute_slider(const scene_params *p, scene_data *d)
@@ -124,58 +124,27 @@ static void compute_numerics(const scene_params *p, scene_data *d)
         d->mode_gain[k] = p->implicit ? 1.0 / (1.0 + d->theta * p->dt * d->damping[k]
                                                + d->theta * d->theta * p->dt * p->dt * d->omega_sq[k])
                                       : 1.0;
-    d->pgs_max_sweeps = p->pgs_max_sweeps;
-    d->pgs_tol_rel = p->pgs_tol_rel;
-    d->pgs_tol_abs = p->pgs_tol_abs;
 }
 
-/* Rounds the double values into the core's bs_real scene. */
-static void to_core(const scene_data *d, const shape_fit *fit, bs_scene *scene)
+void scene_data_set_shapes(scene_data *data, const shape_fit *fit)
 {
-    int i, j, c;
+    data->shape_pieces = fit->pieces;
+    data->shape_scale = fit->pieces / data->length;
+    memcpy(data->shape_coef, fit->coef, sizeof data->shape_coef);
+}
 
-    scene->n_modes = d->n_modes;
-    for (i = 0; i < d->n_modes; ++i) {
-        scene->omega_sq[i] = (bs_real)d->omega_sq[i];
-        scene->damping[i] = (bs_real)d->damping[i];
-        scene->gamma[i] = (bs_real)d->gamma[i];
-        scene->phi_sensor[i] = (bs_real)d->phi_sensor[i];
-        for (j = 0; j < d->n_modes; ++j)
-            scene->stretch[i][j] = (bs_real)d->stretch[i][j];
-    }
-    scene->shape_pieces = fit->pieces;
-    scene->shape_scale = (bs_real)(fit->pieces / d->length);
-    for (j = 0; j < fit->pieces; ++j)
-        for (i = 0; i < d->n_modes; ++i)
-            for (c = 0; c < BS_SHAPE_COEFS; ++c)
-                scene->shape_coef[j][i][c] = (bs_real)fit->coef[j][i][c];
-    scene->length = (bs_real)d->length;
-    scene->half_thickness = (bs_real)d->half_thickness;
-    for (i = 0; i < BS_CORNERS; ++i) {
-        scene->corner[i][0] = (bs_real)d->corner[i][0];
-        scene->corner[i][1] = (bs_real)d->corner[i][1];
-    }
-    scene->com_offset = (bs_real)d->com_offset;
-    scene->stop_min = (bs_real)d->stop_min;
-    scene->stop_max = (bs_real)d->stop_max;
-    scene->mass_inv = (bs_real)d->mass_inv;
-    scene->inertia_inv = (bs_real)d->inertia_inv;
-    scene->gravity[0] = (bs_real)d->gravity[0];
-    scene->gravity[1] = (bs_real)d->gravity[1];
-    scene->mu = (bs_real)d->mu;
-    scene->e_n = (bs_real)d->e_n;
-    scene->base_accel = (bs_real)d->base_accel;
-    scene->base_velocity = (bs_real)d->base_velocity;
-    scene->base_displacement = (bs_real)d->base_displacement;
-    scene->phase_step_half = d->phase_step_half;
-    scene->dt = (bs_real)d->dt;
-    scene->implicit = d->implicit;
-    scene->theta = (bs_real)d->theta;
-    for (i = 0; i < d->n_modes; ++i)
-        scene->mode_gain[i] = (bs_real)d->mode_gain[i];
-    scene->pgs_max_sweeps = d->pgs_max_sweeps;
-    scene->pgs_tol_rel = (bs_real)d->pgs_tol_rel;
-    scene->pgs_tol_abs = (bs_real)d->pgs_tol_abs;
+/* Every element of every field, whole arrays (the unused parts are zero). */
+#define ROUND_REAL(name)                                                                          \
+    for (i = 0; i < sizeof data->name / sizeof(double); ++i)                                        \
+        ((bs_real *)&scene->name)[i] = (bs_real)((const double *)&data->name)[i];
+#define ROUND_INT(name) scene->name = data->name;
+#define ROUND_U64(name) scene->name = data->name;
+#define ROUND_FIELD(kind, name, dim1, dim2, dim3, rule, unit, meaning) ROUND_##kind(name)
+
+void scene_data_round(const scene_data *data, bs_scene *scene)
+{
+    size_t i;
+    BS_SCENE_FIELDS(ROUND_FIELD)
 }
 
 /* Cross-field checks that need derived quantities. */
@@ -247,7 +216,9 @@ static const struct {
     { "corner", "[beam] thickness, [slider] slot_width, play_ratio, com_offset" },
     { "com_offset", "[slider] com_offset" },
     { "com_offset/base_displacement", "[slider] com_offset, [excitation] acceleration, frequency" },
-    { "base_accel/base_velocity/base_displacement", "[excitation] acceleration, frequency" },
+    { "base_accel", "[excitation] acceleration" },
+    { "base_velocity", "[excitation] acceleration, frequency" },
+    { "base_displacement", "[excitation] acceleration, frequency" },
     { "phase_step_half", "[excitation] frequency, [numerics] dt" },
     { "dt", "[numerics] dt" },
     { "mass_inv", "[slider] mass" },
@@ -288,10 +259,12 @@ int scene_build(const scene_file *file, bs_scene *scene, scene_model *model, cha
                  BS_SHAPE_MAX_PIECES, scene_fit_tolerance(), model->fit.error_slope);
         return -1;
     }
-    compute_modes(p, &model->modes, &model->data);
+    memset(&model->data, 0, sizeof model->data);
+    compute_modes(p, &model->modes, &model->data, &model->stretch_norm);
     compute_slider(p, &model->data);
     compute_numerics(p, &model->data);
-    to_core(&model->data, &model->fit, scene);
+    scene_data_set_shapes(&model->data, &model->fit);
+    scene_data_round(&model->data, scene);
     status = bs_scene_check(scene, &field);
     if (status != BS_OK) {
         snprintf(err, size, "%s: the core refuses the scene: %s (field %s, from %s): the values are "
@@ -300,6 +273,16 @@ int scene_build(const scene_file *file, bs_scene *scene, scene_model *model, cha
         return -1;
     }
     return check_start(file, scene, err, size);
+}
+
+bs_solver_options scene_solver(const scene_params *params)
+{
+    bs_solver_options options;
+    options.max_sweeps = params->solver_max_sweeps;
+    options.tol_rel = (bs_real)params->solver_tol_rel;
+    options.tol_abs = (bs_real)params->solver_tol_abs;
+    options.measure_residual = params->solver_residual;
+    return options;
 }
 
 int scene_read(const char *path, scene_file *file, bs_scene *scene, scene_model *model, char *err,

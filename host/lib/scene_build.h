@@ -8,28 +8,23 @@
 #include "scene_ini.h"
 #include "shape_fit.h"
 
-/* A bs_scene's values in double, before they are rounded to bs_real (the
- * mode-shape table lives in a shape_fit). */
+/* A bs_scene's values in double, before they are rounded to bs_real: the
+ * same fields (core/include/bs_scene_fields.h), in double. */
+#define SCENE_DATA_TYPE_REAL double
+#define SCENE_DATA_TYPE_INT int
+#define SCENE_DATA_TYPE_U64 uint64_t
+#define SCENE_DATA_MEMBER(kind, name, dim1, dim2, dim3, rule, unit, meaning) \
+    SCENE_DATA_TYPE_##kind name BS_DIM_##dim1 BS_DIM_##dim2 BS_DIM_##dim3;
 typedef struct scene_data {
-    int n_modes;
-    double omega_sq[BS_MAX_MODES], damping[BS_MAX_MODES], gamma[BS_MAX_MODES];
-    double stretch[BS_MAX_MODES][BS_MAX_MODES], stretch_norm, phi_sensor[BS_MAX_MODES];
-    double length, half_thickness, corner[BS_CORNERS][2], com_offset, stop_min, stop_max;
-    double mass_inv, inertia_inv, gravity[2], mu, e_n;
-    double base_accel, base_velocity, base_displacement;
-    uint64_t phase_step_half;
-    double dt;
-    int implicit;
-    double theta, mode_gain[BS_MAX_MODES];
-    int pgs_max_sweeps;
-    double pgs_tol_rel, pgs_tol_abs;
+    BS_SCENE_FIELDS(SCENE_DATA_MEMBER)
 } scene_data;
 
 /* What the host derived on the way (kept for reports, tests and `gen`). */
 typedef struct scene_model {
     modal_set modes;
     shape_fit fit;    /* at scene_fit_tolerance() */
-    scene_data data;
+    scene_data data;  /* its shape fields from fit */
+    double stretch_norm; /* an upper bound of |S| (0: no stretching) */
     double kappa;     /* k_r L / EI */
     double width;     /* b [m] */
 } scene_model;
@@ -45,6 +40,15 @@ double scene_fit_tolerance(void);
  * clamp stops (free model). Returns 0, or -1 with a message naming the
  * field(s), where they were set and the allowed range. */
 int scene_build(const scene_file *file, bs_scene *scene, scene_model *model, char *err, size_t size);
+
+/* Puts fit's mode-shape table into data (shape_pieces, shape_scale, shape_coef). */
+void scene_data_set_shapes(scene_data *data, const shape_fit *fit);
+
+/* Rounds data into the core's bs_real scene. */
+void scene_data_round(const scene_data *data, bs_scene *scene);
+
+/* The contact-solve settings of the scene file's [solver] section. */
+bs_solver_options scene_solver(const scene_params *params);
 
 /* Convenience: scene_load then scene_build. */
 int scene_read(const char *path, scene_file *file, bs_scene *scene, scene_model *model, char *err,

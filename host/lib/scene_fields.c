@@ -14,8 +14,14 @@
     { section, key, FIELD_CHOICE, offsetof(scene_params, member), 0, 0, 0, 0, "", meaning, choices, default_text }
 #define REAL_OPTIONAL(section, key, member, low, high, default_text, unit, meaning) \
     { section, key, FIELD_REAL, offsetof(scene_params, member), low, high, 0, 0, unit, meaning, 0, default_text }
+#define INT_OPTIONAL(section, key, member, low, high, default_text, unit, meaning) \
+    { section, key, FIELD_INT, offsetof(scene_params, member), low, high, 0, 0, unit, meaning, 0, default_text }
 #define TEXT(section, key, member, meaning) \
     { section, key, FIELD_TEXT, offsetof(scene_params, member), 0, 0, 0, 0, "", meaning, 0, "" }
+
+/* The text of a macro's value (the library's solver defaults). */
+#define TEXT_OF(macro) TEXT_OF_(macro)
+#define TEXT_OF_(value) #value
 
 /* Choice lists: the index of the name is the stored value. */
 static const char *const models[] = { "free", "pcs", 0 };           /* = bs_model */
@@ -52,9 +58,14 @@ const field_spec scene_fields[] = {
     CHOICE("numerics", "integrator", implicit, integrators, "explicit",
            "explicit (midpoint) | implicit (modal stiffness and damping, theta method)"),
     REAL_OPTIONAL("numerics", "theta", theta, 0.5, 1.0, "0.5", "", "theta of the implicit step"),
-    INT("numerics", "pgs_max_sweeps", pgs_max_sweeps, 1, 100000, "", "cap on contact-solve sweeps per step"),
-    REAL("numerics", "pgs_tol_rel", pgs_tol_rel, 0, HUGE_VAL, 0, 1, "", "relative tolerance of the contact solve"),
-    REAL("numerics", "pgs_tol_abs", pgs_tol_abs, 0, HUGE_VAL, 0, 1, "N s", "absolute tolerance of the contact solve"),
+    INT_OPTIONAL("solver", "max_sweeps", solver_max_sweeps, 1, BS_SOLVER_MAX_SWEEPS,
+                 TEXT_OF(BS_SOLVER_DEFAULT_MAX_SWEEPS), "", "cap on contact-solve sweeps per step"),
+    REAL_OPTIONAL("solver", "tol_rel", solver_tol_rel, 0, HUGE_VAL, TEXT_OF(BS_SOLVER_DEFAULT_TOL_REL), "",
+                  "relative tolerance of the contact solve"),
+    REAL_OPTIONAL("solver", "tol_abs", solver_tol_abs, 0, HUGE_VAL, TEXT_OF(BS_SOLVER_DEFAULT_TOL_ABS), "N s",
+                  "absolute tolerance of the contact solve"),
+    CHOICE("solver", "residual", solver_residual, switches, "on",
+           "on | off: measure the residual after each sweep (off: exactly max_sweeps sweeps)"),
     REAL("run", "s0", s0, 0, 1, 0, 0, "", "start position x_C / L (PCS: prescribed position)"),
     REAL("run", "t_end", t_end, 0, HUGE_VAL, 1, 1, "s", "simulated time"),
     CHOICE("run", "model", model, models, 0, "free | pcs"),

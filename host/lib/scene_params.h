@@ -30,9 +30,10 @@ typedef struct scene_params {
     double theta;                   /* implicit step's theta, [1/2, 1] */
     int stretching;                 /* 1: cubic bending-stretching term, 0: left out */
     double dt;                      /* [s] */
-    int pgs_max_sweeps;
-    double pgs_tol_rel;
-    double pgs_tol_abs;             /* [N s] */
+    int solver_max_sweeps;          /* [solver]: the run's bs_solver_options */
+    double solver_tol_rel;
+    double solver_tol_abs;          /* [N s] */
+    int solver_residual;            /* measure_residual */
     double s0;                      /* start position x_C / L */
     double t_end;                   /* [s] */
     int model;                      /* bs_model */

@@ -17,7 +17,6 @@
 #include <string.h>
 #include "bs_monitor.h"
 #include "bs_platform.h"
-#include "bs_shape.h"
 #include "progress.h"
 
 const char sweep_csv_header[] =
@@ -63,17 +62,16 @@ static void fail_write(sweep_result *result)
 static int write_trace_row(FILE *trace, const bs_scene *scene, const bs_sim *sim, double s, double period,
                            double t)
 {
-    bs_real q[BS_MAX_MODES], phi[BS_MAX_MODES], slope[BS_MAX_MODES], slider[3];
-    double w_slope = 0.0, alpha;
-    int k;
-    bs_sim_get_state(sim, q, NULL, slider, NULL);
-    bs_shape_eval(scene, (bs_real)s * scene->length, phi, slope);
-    for (k = 0; k < scene->n_modes; ++k)
-        w_slope += (double)slope[k] * (double)q[k];
-    alpha = atan(w_slope);
+    bs_real slider[3], w_slope;
+    bs_step_report report;
+    double alpha;
+    bs_sim_get_state(sim, NULL, NULL, slider, NULL);
+    bs_sim_beam_at(sim, (bs_real)s * scene->length, NULL, &w_slope);
+    bs_sim_get_report(sim, &report);
+    alpha = atan((double)w_slope);
     return fprintf(trace, "%.6f,%.9f,%.6e,%.6e,%.6e,%.6e,%u\n", period, t,
                    (double)bs_sim_sensor(sim) / (2.0 * (double)scene->half_thickness), (double)slider[2],
-                   alpha, (double)slider[2] + alpha, bs_sim_report(sim)->active) < 0;
+                   alpha, (double)slider[2] + alpha, report.active) < 0;
 }
 
 /* Integrates one grid point: hold + record periods. Returns the status of
@@ -105,18 +103,18 @@ static bs_status run_point(const bs_scene *scene, bs_sim *sim, bs_monitor *monit
         if (done == periods || result->write_failed)
             break;
         {
-            const bs_step_report *report;
+            bs_step_report report;
             const bs_status status = bs_sim_step(sim);
             if (status != BS_OK)
                 return status;
             ++point->steps;
-            report = bs_sim_report(sim);
-            if (report->active) {
+            bs_sim_get_report(sim, &report);
+            if (report.active) {
                 ++point->contact_steps;
-                total_sweeps += (uint64_t)report->sweeps;
-                if (report->sweeps > point->max_sweeps)
-                    point->max_sweeps = report->sweeps;
-                if (!report->converged)
+                total_sweeps += (uint64_t)report.sweeps;
+                if (report.sweeps > point->max_sweeps)
+                    point->max_sweeps = report.sweeps;
+                if (report.converged == 0)
                     ++point->unconverged_steps;
             }
         }
@@ -163,6 +161,8 @@ int sweep_run(const bs_scene *scene, const sweep_options *options, sweep_result 
     }
     result->status = bs_sim_init(&sim, scene, BS_MODEL_PCS,
                                  (bs_real)sweep_grid_s(options, options->down ? n - 1 : 0));
+    if (result->status == BS_OK)
+        result->status = bs_sim_set_solver(&sim, &options->solver);
     if (result->status != BS_OK)
         return -1;
     bs_monitor_init(&monitor, &sim);

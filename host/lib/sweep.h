@@ -35,6 +35,7 @@ typedef struct sweep_options {
     int down;                 /* 0: from -> to; 1: to -> from */
     int hold, record;         /* excitation periods per point: hold >= 0, record >= 1 */
     double dt;                /* the scene's step in double [s] (trace times) */
+    bs_solver_options solver; /* contact-solve settings */
     FILE *csv;                /* NULL or one row per point (sweep_csv_header) */
     sweep_point *points;      /* NULL or room for sweep_grid_size() points, in sweep order */
     FILE *trace;              /* NULL or per-step rows (sweep_trace_header) at trace_index */

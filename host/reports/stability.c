@@ -117,7 +117,7 @@ static double energy(void)
     e += 0.5 / (double)scene.mass_inv * ((double)velocity[0] * (double)velocity[0] + (double)velocity[1] * (double)velocity[1]);
     if (scene.inertia_inv > 0)
         e += 0.5 / (double)scene.inertia_inv * (double)velocity[2] * (double)velocity[2];
-    if (sim.step == 0) {
+    if (bs_sim_steps(&sim) == 0) {
         z0_x = (double)pose[0];
         z0_z = (double)pose[1];
     }
@@ -145,6 +145,10 @@ static void run_case(const stability_case *c)
         return;
     }
     status = bs_sim_init(&sim, &scene, (bs_model)file.params.model, (bs_real)file.params.s0);
+    if (status == BS_OK) {
+        const bs_solver_options solver = scene_solver(&file.params);
+        status = bs_sim_set_solver(&sim, &solver);
+    }
     if (status != BS_OK) {
         printf("| %s | %s | refused by the core | %s: %s |\n", c->name, c->change,
                status == BS_E_UNSTABLE ? "pass" : "FAIL", bs_status_text(status));
@@ -158,23 +162,23 @@ static void run_case(const stability_case *c)
     }
     steps = (long)(c->t_end / file.params.dt + 0.5);
     for (n = 0; n < steps; ++n) {
-        const bs_step_report *report;
+        bs_step_report report;
         bs_real pose[3];
         double w;
         status = bs_sim_step(&sim);
         if (status != BS_OK)
             break;
-        report = bs_sim_report(&sim);
-        if (report->active) {
+        bs_sim_get_report(&sim, &report);
+        if (report.active) {
             unsigned a, count = 0;
-            for (a = report->active; a; a >>= 1)
+            for (a = report.active; a; a >>= 1)
                 count += a & 1u;
             ++contact_steps;
             if ((int)count > most)
                 most = (int)count;
-            if (report->sweeps > max_sweeps)
-                max_sweeps = report->sweeps;
-            unconverged += !report->converged;
+            if (report.sweeps > max_sweeps)
+                max_sweeps = report.sweeps;
+            unconverged += report.converged == 0;
         }
         bs_sim_get_state(&sim, NULL, NULL, pose, NULL);
         w = (double)bs_sim_sensor(&sim);

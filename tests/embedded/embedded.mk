@@ -15,9 +15,24 @@
 # the same lines (tests/check_embedded.sh).
 include port/cortex-m/cortex-m.mk
 
-# emb_flags SCENE REAL STEPS EXTRA
-emb_flags = -fno-tree-loop-distribute-patterns -Icore/include -Icore/src -Iport/embedded -I. -DBS_REAL_FLOAT=$(if $(filter float,$2),1,0) \
-            -DBS_SCENE_CONFIG='"configs/$1.h"' -DBS_RUN_STEPS=$3 $4
+# Every image is compiled against a generated build configuration naming its
+# scene and precision (and BS_WITH_SUBSPACE=0 for the sweeps solve):
+# $(EMB_CONFIG)/SCENE.REAL.SOLVE/bs_build_config.h, SOLVE = subspace | sweeps.
+EMB_CONFIG := $(BUILD)/embconfig
+emb_config_h = $(EMB_CONFIG)/$1.$2.$3/bs_build_config.h
+$(EMB_CONFIG)/%/bs_build_config.h: core/include/bs_build_config.h.in port/build_config.sh
+	@sh port/build_config.sh $@ $(word 2,$(subst ., ,$*)) 'BS_SCENE_CONFIG="configs/$(word 1,$(subst ., ,$*)).h"' \
+	    $(if $(filter sweeps,$(word 3,$(subst ., ,$*))),BS_WITH_SUBSPACE=0)
+
+# emb_flags SCENE REAL STEPS SOLVE EXTRA: an image's compile flags
+emb_flags = -fno-tree-loop-distribute-patterns -I$(EMB_CONFIG)/$1.$2.$4 -Icore/include -Icore/src -Iport/embedded -I. \
+            -DBS_RUN_STEPS=$3 $5
+# $(call emb_image,NAME,TARGET,SCENE,REAL,STEPS,SOLVE,EXTRA): cm_image of scene_run.c and the core
+define emb__image
+$(call cm_image,$1,$2,$(EMB_SRC),$(call emb_flags,$3,$4,$5,$6,$7))
+$$(CM_OBJS_$2_$1): $(call emb_config_h,$3,$4,$6)
+endef
+emb_image = $(eval $(call emb__image,$(strip $1),$(strip $2),$(strip $3),$(strip $4),$(strip $5),$(strip $6),$7))
 EMB_SRC := tests/embedded/scene_run.c $(CORE_SRC)
 # TARGET:SCENE:REAL:STEPS run in `make test` (soft-float targets: fewer steps)
 EMB_CHECKS := cortex-m4f:fig6:float:20000 cortex-m4f:fig6_1mode:float:20000 \
@@ -39,28 +54,32 @@ EMB_O2 := fig6:subspace fig6:sweeps fig6_1mode:subspace fig6_1mode:sweeps fig6_f
 emb_steps = $(if $(filter cortex-m3 cortex-m0plus,$1),2000,20000)
 
 emb_word = $(word $2,$(subst :, ,$1))
-$(foreach c,$(EMB_CHECKS),$(call cm_image,check-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1),\
-    $(EMB_SRC),$(call emb_flags,$(call emb_word,$c,2),$(call emb_word,$c,3),$(call emb_word,$c,4),)))
-$(foreach s,$(EMB_COST_SCENES),$(foreach t,$(EMB_COST_TARGETS),$(call cm_image,cost-$s-$(call emb_word,$t,2),\
-    $(call emb_word,$t,1),$(EMB_SRC),$(call emb_flags,$s,$(call emb_word,$t,2),$(call emb_steps,$(call emb_word,$t,1)),-DBS_RUN_COST=1))))
-$(foreach s,$(EMB_SWEEPS_SCENES),$(foreach t,$(EMB_SWEEPS_TARGETS),$(call cm_image,cost-$s-$(call emb_word,$t,2)-sweeps,\
-    $(call emb_word,$t,1),$(EMB_SRC),$(call emb_flags,$s,$(call emb_word,$t,2),20000,-DBS_RUN_COST=1 -DBS_WITH_SUBSPACE=0))))
-$(foreach w,$(EMB_WHOLE),$(foreach v,subspace:1 sweeps:0,$(call cm_image,whole-$(call emb_word,$w,2)-float-$(call emb_word,$v,1),\
-    $(call emb_word,$w,1),$(EMB_SRC),$(call emb_flags,$(call emb_word,$w,2),float,BS_SCENE_STEPS,\
-    -DBS_RUN_COST=1 -DBS_RUN_TIGHT_STEPS=0 -DBS_WITH_SUBSPACE=$(call emb_word,$v,2)))))
-$(foreach c,$(EMB_O2),$(call cm_image,cost-$(call emb_word,$c,1)-float-$(call emb_word,$c,2)-O2,cortex-m4f,$(EMB_SRC),\
-    $(call emb_flags,$(call emb_word,$c,1),float,20000,-DBS_RUN_COST=1 -DBS_WITH_SUBSPACE=$(if $(filter sweeps,$(call emb_word,$c,2)),0,1) -O2)))
+$(foreach c,$(EMB_CHECKS),$(call emb_image,check-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1),\
+    $(call emb_word,$c,2),$(call emb_word,$c,3),$(call emb_word,$c,4),subspace,))
+$(foreach s,$(EMB_COST_SCENES),$(foreach t,$(EMB_COST_TARGETS),$(call emb_image,cost-$s-$(call emb_word,$t,2),\
+    $(call emb_word,$t,1),$s,$(call emb_word,$t,2),$(call emb_steps,$(call emb_word,$t,1)),subspace,-DBS_RUN_COST=1)))
+$(foreach s,$(EMB_SWEEPS_SCENES),$(foreach t,$(EMB_SWEEPS_TARGETS),$(call emb_image,cost-$s-$(call emb_word,$t,2)-sweeps,\
+    $(call emb_word,$t,1),$s,$(call emb_word,$t,2),20000,sweeps,-DBS_RUN_COST=1)))
+$(foreach w,$(EMB_WHOLE),$(foreach v,subspace sweeps,$(call emb_image,whole-$(call emb_word,$w,2)-float-$v,\
+    $(call emb_word,$w,1),$(call emb_word,$w,2),float,BS_SCENE_STEPS,$v,-DBS_RUN_COST=1 -DBS_RUN_TIGHT_STEPS=0)))
+$(foreach c,$(EMB_O2),$(call emb_image,cost-$(call emb_word,$c,1)-float-$(call emb_word,$c,2)-O2,cortex-m4f,\
+    $(call emb_word,$c,1),float,20000,$(call emb_word,$c,2),-DBS_RUN_COST=1 -O2))
 
-# The host twin of a check image: build/embhost/check-SCENE-REAL-STEPS
+# The host twin of a check image: $(EMB_HOST)/SCENE.REAL.STEPS, scene_run.c and the
+# core compiled for the host against the same configuration.
 EMB_HOST := $(BUILD)/embhost
-$(EMB_HOST)/check-%: tests/embedded/scene_run.c tests/embedded/bs_board_host.c $(CORE_SRC) $(wildcard core/*/*.h configs/*.h)
-	@mkdir -p $(dir $@)
-	$(CC) -O2 $(BASE_CFLAGS:-DBS_REAL_FLOAT%=) -Icore/include -Icore/src -Iport/host -Iport/cortex-m -I. \
-	    -DBS_REAL_FLOAT=$(if $(filter float,$(word 2,$(subst -, ,$(subst fig6_1mode,fig6x1mode,$*)))),1,0) \
-	    -DBS_SCENE_CONFIG='"configs/$(subst x1mode,_1mode,$(word 1,$(subst -, ,$(subst fig6_1mode,fig6x1mode,$*)))).h"' \
-	    -DBS_RUN_STEPS=$(word 3,$(subst -, ,$*)) -o $@ tests/embedded/scene_run.c tests/embedded/bs_board_host.c $(CORE_SRC) -lm
+define emb__host
+$(EMB_HOST)/$1.$2.$3: tests/embedded/scene_run.c tests/embedded/bs_board_host.c $(CORE_SRC) \
+        $(wildcard core/*/*.h) configs/$1.h $(call emb_config_h,$1,$2,subspace)
+	@mkdir -p $$(dir $$@)
+	$$(CC) -O2 $$(BASE_CFLAGS) -I$(EMB_CONFIG)/$1.$2.subspace -Icore/include -Icore/src -Iport/host \
+	    -Iport/cortex-m -I. -DBS_RUN_STEPS=$3 -o $$@ tests/embedded/scene_run.c tests/embedded/bs_board_host.c \
+	    $(CORE_SRC) -lm
+endef
+EMB_HOST_TWINS := $(sort $(foreach c,$(EMB_CHECKS),$(call emb_word,$c,2):$(call emb_word,$c,3):$(call emb_word,$c,4)))
+$(foreach c,$(EMB_HOST_TWINS),$(eval $(call emb__host,$(call emb_word,$c,1),$(call emb_word,$c,2),$(call emb_word,$c,3))))
 
-EMB_CHECK_PAIRS := $(foreach c,$(EMB_CHECKS),$(call emb_word,$c,1):$(call cm_elf,check-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1)):$(EMB_HOST)/check-$(call emb_word,$c,2)-$(call emb_word,$c,3)-$(call emb_word,$c,4))
+EMB_CHECK_PAIRS := $(foreach c,$(EMB_CHECKS),$(call emb_word,$c,1):$(call cm_elf,check-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1)):$(EMB_HOST)/$(call emb_word,$c,2).$(call emb_word,$c,3).$(call emb_word,$c,4))
 
 embedded-test: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_CHECK_PAIRS),$(call emb_word,$p,2) $(call emb_word,$p,3)))
 	$(if $(CM_TOOLS_OK),@sh tests/check_embedded.sh $(EMB_CHECK_PAIRS),@echo "$(CM_TOOLS_MSG)")
@@ -87,7 +106,7 @@ ifneq ($(TARGET),host)
 ifeq ($(filter $(TARGET),$(CM_TARGETS)),)
 $(error TARGET must be host or one of: $(CM_TARGETS))
 endif
-$(call cm_image,$(SCENE)-$(REAL)-$(STEPS),$(TARGET),$(EMB_SRC),$(call emb_flags,$(SCENE),$(REAL),$(STEPS),))
+$(call emb_image,$(SCENE)-$(REAL)-$(STEPS),$(TARGET),$(SCENE),$(REAL),$(STEPS),subspace,)
 all: $(call cm_elf,$(SCENE)-$(REAL)-$(STEPS),$(TARGET))
 	@arm-none-eabi-size $<
 run: all

@@ -2,7 +2,8 @@
  * compiled scene (BS_SCENE_CONFIG) from its start and prints its state, so
  * that a target under QEMU and the host can be compared line by line.
  *
- * Build with -DBS_SCENE_CONFIG='"configs/NAME.h"' -DBS_RUN_STEPS=N.
+ * Build against a build configuration naming the scene (BS_SCENE_CONFIG,
+ * tests/embedded/embedded.mk) with -DBS_RUN_STEPS=N.
  *
  * Check mode (default): "scene: step N hash H s S" every BS_RUN_EVERY steps,
  * then "scene: end status 0 steps N hash H most-contacts C"; H is the state's
@@ -42,6 +43,20 @@
 
 static bs_sim sim;
 
+/* bs_sim_init and the scene file's solver settings. */
+static bs_status start(const bs_scene *scene, bs_real s0)
+{
+    bs_solver_options solver;
+    const bs_status status = bs_sim_init(&sim, scene, BS_SCENE_MODEL, s0);
+    if (status != BS_OK)
+        return status;
+    solver.max_sweeps = BS_SCENE_SOLVER_MAX_SWEEPS;
+    solver.tol_rel = BS_SCENE_SOLVER_TOL_REL;
+    solver.tol_abs = BS_SCENE_SOLVER_TOL_ABS;
+    solver.measure_residual = BS_SCENE_SOLVER_RESIDUAL;
+    return bs_sim_set_solver(&sim, &solver);
+}
+
 typedef struct phase_result {
     bs_status status;
     long steps;        /* steps done */
@@ -69,6 +84,7 @@ static phase_result run(long steps, const char *phase)
 {
     phase_result result = { BS_OK, 0, 0 };
     while (result.steps < steps) {
+        bs_step_report report;
         unsigned active, count = 0;
         bs_board_mark();
         result.status = step_function(&sim);
@@ -76,7 +92,8 @@ static phase_result run(long steps, const char *phase)
         if (result.status != BS_OK)
             break;
         ++result.steps;
-        for (active = bs_sim_report(&sim)->active; active; active >>= 1)
+        bs_sim_get_report(&sim, &report);
+        for (active = report.active; active; active >>= 1)
             count += active & 1u;
         if (count > result.most)
             result.most = count;
@@ -106,7 +123,7 @@ static int prepare_tight(void)
     bs_real pose[3];
     bs_real squeeze;
     memcpy(&tight, &bs_compiled_scene, sizeof tight);
-    if (bs_sim_init(&sim, &tight, BS_SCENE_MODEL, BS_R(0.5)) != BS_OK)
+    if (start(&tight, BS_R(0.5)) != BS_OK)
         return -1;
     bs_sim_get_state(&sim, 0, 0, pose, 0);
     pose[0] = tight.stop_min;
@@ -129,7 +146,11 @@ int main(void)
     int failed;
 
     printf("scene %s real %s steps %ld\n", BS_SCENE_NAME, BS_REAL_NAME, (long)BS_RUN_STEPS);
-    if (bs_sim_init(&sim, &bs_compiled_scene, BS_SCENE_MODEL, BS_SCENE_START) != BS_OK) {
+    if (bs_build_check() != BS_OK) {
+        printf("scene: this program and the core were built differently\n");
+        return 1;
+    }
+    if (start(&bs_compiled_scene, BS_SCENE_START) != BS_OK) {
         printf("scene: init refused\n");
         return 1;
     }

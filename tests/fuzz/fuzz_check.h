@@ -39,22 +39,42 @@ static int fuzz_state_finite(const bs_sim *sim)
     return 1;
 }
 
-/* One bs_sim_step with its contract checked: BS_OK with a finite state, or
- * BS_E_UNSTABLE / BS_E_NONFINITE with the state (hash) as it was, also when
- * the failing step is tried again. Returns the status. */
+/* The state a successful step leaves, handed back through bs_sim_set_state
+ * (on a copy), must be accepted: what the step produces, set_state takes. */
+static void fuzz_state_restorable(const bs_sim *sim)
+{
+    static bs_sim copy;
+    bs_real q[BS_MAX_MODES], u[BS_MAX_MODES], pose[3], velocity[3];
+    copy = *sim;
+    if (bs_sim_get_state(&copy, q, u, pose, velocity) != BS_OK
+        || bs_sim_set_state(&copy, q, u, pose, velocity) != BS_OK)
+        fuzz_fail("bs_sim_set_state refused a state bs_sim_step produced");
+}
+
+/* One bs_sim_step with its contract checked: BS_OK with a finite state that
+ * bs_sim_set_state accepts, or BS_E_UNSTABLE / BS_E_NONFINITE / BS_E_ESCAPED
+ * with the state (hash) as it was, also when the failing step is tried
+ * again. Returns the status. */
 static bs_status fuzz_step_checked(bs_sim *sim)
 {
     const uint32_t before = bs_sim_hash(sim);
     const bs_status status = bs_sim_step(sim);
+    bs_step_report report;
+    bs_solver_options solver;
 
     if (status == BS_OK) {
         if (!fuzz_state_finite(sim))
             fuzz_fail("bs_sim_step returned BS_OK with a non-finite state");
-        if (bs_sim_report(sim)->sweeps < 0 || bs_sim_report(sim)->sweeps > sim->scene->pgs_max_sweeps)
-            fuzz_fail("bs_sim_step reported sweeps outside [0, pgs_max_sweeps]");
+        if (bs_sim_get_report(sim, &report) != BS_OK || bs_sim_get_solver(sim, &solver) != BS_OK)
+            fuzz_fail("bs_sim_get_report or bs_sim_get_solver refused a ready sim");
+        if (report.sweeps < 0 || report.sweeps > solver.max_sweeps)
+            fuzz_fail("bs_sim_step reported sweeps outside [0, max_sweeps]");
+        if (report.converged != (report.active && !solver.measure_residual ? -1 : (report.converged != 0)))
+            fuzz_fail("bs_sim_step reported convergence other than -1 (not measured), 0 or 1");
+        fuzz_state_restorable(sim);
         return status;
     }
-    if (status != BS_E_UNSTABLE && status != BS_E_NONFINITE)
+    if (status != BS_E_UNSTABLE && status != BS_E_NONFINITE && status != BS_E_ESCAPED)
         fuzz_fail("bs_sim_step returned a status it does not document");
     if (bs_sim_hash(sim) != before)
         fuzz_fail("bs_sim_step failed and changed the state");

@@ -156,9 +156,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
 
     /* what the host accepts, the core must accept and run */
-    if (scene.pgs_max_sweeps > FUZZ_MAX_SWEEPS && !getenv("FUZZ_STRICT"))
-        scene.pgs_max_sweeps = FUZZ_MAX_SWEEPS;
     status = bs_sim_init(&sim, &scene, (bs_model)file.params.model, (bs_real)file.params.s0);
+    if (status == BS_OK) {
+        bs_solver_options solver = scene_solver(&file.params);
+        if (solver.max_sweeps > FUZZ_MAX_SWEEPS && !getenv("FUZZ_STRICT"))
+            solver.max_sweeps = FUZZ_MAX_SWEEPS;
+        status = bs_sim_set_solver(&sim, &solver);
+    }
     if (status != BS_OK) {
         fprintf(stderr, "bs_sim_init: %s\n", bs_status_text(status));
         die("the host accepted a scene the core refuses");

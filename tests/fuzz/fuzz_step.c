@@ -26,8 +26,9 @@
  *   scene edits: target byte, index (2 bytes), value (see take_value)
  *   s0: value edit of 0.3
  *   then opcodes until the input ends (at most FUZZ_MAX_STEPS steps in all),
- *   op % 8: 0-2 run (op >> 3) * 2 + 1 steps, 3-4 bs_sim_set_state, 5 PCS
- *   move, 6 queries and NULL arguments, 7 restart with another s0.
+ *   op % 9: 0-2 run (op >> 3) * 2 + 1 steps, 3-4 bs_sim_set_state, 5 PCS
+ *   move, 6 queries and NULL arguments, 7 restart with another s0, 8 new
+ *   contact-solve settings (bs_sim_set_solver).
  * FUZZ_VERBOSE in the environment prints what an input does.
  */
 #include <float.h>
@@ -51,7 +52,7 @@
 #endif
 
 #define FUZZ_MAX_STEPS 1024
-/* A step costs up to pgs_max_sweeps sweeps, by design (docs/design.md 6): the
+/* A step costs up to max_sweeps sweeps, by design (docs/design.md 6): the
  * solve stops early only when a sweep does not lower the residual, and in a
  * near-singular contact problem it creeps down for 5e5 sweeps and more
  * (docs/robustness.md). Larger caps are lowered to this, so that an input
@@ -170,47 +171,49 @@ typedef struct target {
     int count; /* elements of bs_real / int */
 } target;
 
-#define REALS(member, count) { REAL_FIELD, offsetof(bs_scene, member), count }
+/* Every field of the scene (core/include/bs_scene_fields.h), then two edits
+ * that keep a scene consistent so that the checks look further. */
+#define TARGET_REAL(name) { REAL_FIELD, offsetof(bs_scene, name), (int)(sizeof scene.name / sizeof(bs_real)) },
+#define TARGET_INT(name) { INT_FIELD, offsetof(bs_scene, name), 1 },
+#define TARGET_U64(name) { PHASE_FIELD, offsetof(bs_scene, name), 1 },
+#define TARGET(kind, name, dim1, dim2, dim3, rule, unit, meaning) TARGET_##kind(name)
 static const target targets[] = {
-    REALS(omega_sq, BS_MAX_MODES),
-    REALS(damping, BS_MAX_MODES),
-    REALS(gamma, BS_MAX_MODES),
-    REALS(stretch, BS_MAX_MODES * BS_MAX_MODES),
+    BS_SCENE_FIELDS(TARGET)
     { STRETCH_SYMMETRIC, offsetof(bs_scene, stretch), BS_MAX_MODES * BS_MAX_MODES },
-    REALS(phi_sensor, BS_MAX_MODES),
-    REALS(shape_scale, 1),
-    REALS(shape_coef, BS_SHAPE_MAX_PIECES * BS_MAX_MODES * BS_SHAPE_COEFS),
-    REALS(length, 1),
-    REALS(half_thickness, 1),
-    REALS(corner, BS_CORNERS * 2),
-    REALS(com_offset, 1),
-    REALS(stop_min, 1),
-    REALS(stop_max, 1),
-    REALS(mass_inv, 1),
-    REALS(inertia_inv, 1),
-    REALS(gravity, 2),
-    REALS(mu, 1),
-    REALS(e_n, 1),
-    REALS(base_accel, 1),
-    REALS(base_velocity, 1),
-    REALS(base_displacement, 1),
-    REALS(dt, 1),
-    REALS(pgs_tol_rel, 1),
-    REALS(pgs_tol_abs, 1),
-    { INT_FIELD, offsetof(bs_scene, n_modes), 1 },
-    { INT_FIELD, offsetof(bs_scene, shape_pieces), 1 },
-    { INT_FIELD, offsetof(bs_scene, pgs_max_sweeps), 1 },
-    { PHASE_FIELD, offsetof(bs_scene, phase_step_half), 1 },
-#ifdef BS_WITH_IMPLICIT /* the linearly implicit step, where the core has it */
-    REALS(theta, 1),
-    REALS(mode_gain, BS_MAX_MODES),
-    { INT_FIELD, offsetof(bs_scene, implicit), 1 },
     { IMPLICIT_ON, offsetof(bs_scene, implicit), 1 },
-#endif
 };
 #define TARGETS ((int)(sizeof targets / sizeof targets[0]))
 
 static int verbose; /* FUZZ_VERBOSE set: print what an input does (to read a reproducer) */
+
+/* New contact-solve settings from the input: accepted exactly when valid,
+ * and nothing changes when refused. */
+static void set_solver(input *in)
+{
+    bs_solver_options options, got;
+    const uint32_t before = bs_sim_hash(&sim);
+    int valid;
+    bs_status status;
+
+    bs_sim_get_solver(&sim, &options);
+    options.max_sweeps = take_int(in, options.max_sweeps);
+    if (options.max_sweeps > FUZZ_MAX_SWEEPS && options.max_sweeps <= BS_SOLVER_MAX_SWEEPS && !getenv("FUZZ_STRICT"))
+        options.max_sweeps = FUZZ_MAX_SWEEPS;
+    options.tol_rel = take_value(in, options.tol_rel);
+    options.tol_abs = take_value(in, options.tol_abs);
+    options.measure_residual = (int)(take_byte(in) % 3) - (take_byte(in) & 1); /* -1 .. 2 */
+    valid = options.max_sweeps >= 1 && options.max_sweeps <= BS_SOLVER_MAX_SWEEPS
+            && fuzz_finite(options.tol_rel) && options.tol_rel >= BS_R(0.0) && fuzz_finite(options.tol_abs)
+            && options.tol_abs >= BS_R(0.0) && (options.measure_residual == 0 || options.measure_residual == 1);
+    status = bs_sim_set_solver(&sim, &options);
+    if (status != (valid ? BS_OK : BS_E_ARGUMENT))
+        fuzz_fail("bs_sim_set_solver: wrong status");
+    bs_sim_get_solver(&sim, &got);
+    if (valid && memcmp(&got, &options, sizeof got) != 0)
+        fuzz_fail("bs_sim_set_solver did not store the options");
+    if (bs_sim_hash(&sim) != before)
+        fuzz_fail("bs_sim_set_solver changed the state");
+}
 
 static void edit_scene(input *in)
 {
@@ -246,7 +249,7 @@ static void edit_scene(input *in)
         break;
     }
     case IMPLICIT_ON:
-#ifdef BS_WITH_IMPLICIT
+#if BS_WITH_IMPLICIT
     { /* a consistent implicit scene: the gains as the host computes them */
         int k;
         scene.implicit = 1;
@@ -372,8 +375,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     scene = bases[(head & 3) % FUZZ_BASES];
     for (i = 0; i < (int)(head >> 3); ++i)
         edit_scene(&in);
-    if (scene.pgs_max_sweeps > FUZZ_MAX_SWEEPS && !getenv("FUZZ_STRICT"))
-        scene.pgs_max_sweeps = FUZZ_MAX_SWEEPS;
 
     check = bs_scene_check(&scene, &field);
     if (check != BS_OK && check != BS_E_SCENE && check != BS_E_UNSTABLE)
@@ -392,18 +393,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     while (in.size > 0 && steps < FUZZ_MAX_STEPS) {
         const unsigned op = take_byte(&in);
         if (verbose)
-            fprintf(stderr, "op %u (%u) after %d steps\n", op % 8, op, steps);
-        switch (op % 8) {
+            fprintf(stderr, "op %u (%u) after %d steps\n", op % 9, op, steps);
+        switch (op % 9) {
         case 0:
         case 1:
         case 2: { /* run up to 64 steps, or until the step refuses */
             int n;
             for (n = 0; n < (int)(op >> 3) * 2 + 1 && steps < FUZZ_MAX_STEPS; ++n, ++steps) {
+                bs_step_report report;
                 status = fuzz_step_checked(&sim);
+                bs_sim_get_report(&sim, &report);
                 if (verbose)
                     fprintf(stderr, "  step %d: %s, contacts 0x%x, sweeps %d, residual %g\n", steps + 1,
-                            bs_status_text(status), bs_sim_report(&sim)->active, bs_sim_report(&sim)->sweeps,
-                            (double)bs_sim_report(&sim)->residual);
+                            bs_status_text(status), report.active, report.sweeps, (double)report.residual);
                 if (status != BS_OK)
                     break;
             }
@@ -435,11 +437,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             { /* NULL pointers and a model that does not exist; the sim is untouched */
                 static bs_sim scratch;
                 const uint32_t before = bs_sim_hash(&sim);
+                static bs_sim never; /* zeroed, never initialised */
                 if (bs_scene_check(NULL, NULL) != BS_E_NULL
                     || bs_sim_init(NULL, &scene, model, s0) != BS_E_NULL || bs_sim_init(&scratch, NULL, model, s0) != BS_E_NULL
                     || bs_sim_step(NULL) != BS_E_NULL || bs_sim_set_state(NULL, NULL, NULL, NULL, NULL) != BS_E_NULL
-                    || bs_sim_set_pcs_position(NULL, BS_R(0.5)) != BS_E_NULL)
+                    || bs_sim_set_pcs_position(NULL, BS_R(0.5)) != BS_E_NULL || bs_sim_set_solver(&sim, NULL) != BS_E_NULL
+                    || bs_sim_get_report(&sim, NULL) != BS_E_NULL)
                     fuzz_fail("a NULL argument was not answered with BS_E_NULL");
+                if (bs_sim_step(&never) != BS_E_UNINITIALISED || bs_sim_hash(&never) != 0
+                    || !(bs_sim_position(&never) != bs_sim_position(&never)))
+                    fuzz_fail("a never-initialised sim was not refused");
                 if (bs_sim_init(&scratch, &scene, (bs_model)(int)(op >> 3), s0) == BS_OK && (op >> 3) > 1)
                     fuzz_fail("bs_sim_init accepted a model that does not exist");
                 if (bs_sim_hash(&sim) != before)
@@ -447,6 +454,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             }
             break;
         }
+        case 8:
+            set_solver(&in);
+            break;
         default: /* restart with another s0 */
             s0 = take_value(&in, s0);
             status = bs_sim_init(&sim, &scene, model, s0);

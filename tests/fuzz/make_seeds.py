@@ -81,9 +81,11 @@ for name, text in edge.items():
 # edits (>> 3). A value is (how, which[, raw bytes]): how 1 = special_values[which],
 # 2 = current * factors[which], 5 = small integer, 6 = keep.
 KEEP = [6, 0]
-RUN63 = [0xF8]                      # op 0, (31 * 2 + 1) = 63 steps
-T = {"omega_sq": 0, "damping": 1, "stretch": 3, "length": 8, "corner": 10, "com_offset": 11,
-     "mass_inv": 14, "mu": 17, "e_n": 18, "base_accel": 19, "dt": 22, "n_modes": 25, "pgs_max_sweeps": 27}
+RUN63 = [252]                       # op 252 % 9 = 0 (run), (252 >> 3) * 2 + 1 = 63 steps
+# scene edit targets: the fields of core/include/bs_scene_fields.h in order
+T = {"n_modes": 0, "omega_sq": 1, "damping": 2, "stretch": 4, "length": 9, "corner": 11, "com_offset": 12,
+     "mass_inv": 15, "mu": 18, "e_n": 19, "base_accel": 20, "base_displacement": 22, "dt": 24}
+SOLVER = 8                          # op 8: bs_sim_set_solver(max_sweeps, tol_rel, tol_abs, measure_residual)
 
 
 def head(base, pcs=False, edits=0):
@@ -108,12 +110,16 @@ steps = [
     ("modes_zero", head(0, edits=1) + [T["n_modes"], 0, 0, 1, 1] + KEEP + RUN63 * 4),
     ("mu_huge", head(0, edits=1) + [T["mu"], 0, 0] + special(13) + KEEP + RUN63 * 4),
     ("accel_huge", head(1, edits=1) + [T["base_accel"], 0, 0] + factor(8) + KEEP + RUN63 * 4),
-    ("sweeps_many", head(0, edits=1) + [T["pgs_max_sweeps"], 0, 0, 1, 11] + KEEP + RUN63 * 4),
+    ("sweeps_many", head(0) + KEEP + [SOLVER, 1, 10] + KEEP + KEEP + [1, 0] + RUN63 * 4),
+    ("residual_off", head(0) + KEEP + [SOLVER, 3] + KEEP + KEEP + [0, 0] + RUN63 * 4),
     ("s0_nan", head(0) + special(0) + RUN63),
+    # bs_sim_init once returned BS_OK with z_C = base_displacement - com_offset = inf
+    ("regress-init-z-overflow", head(0, edits=2) + [T["base_displacement"], 0, 0] + special(14)
+     + [T["com_offset"], 0, 0] + special(15) + KEEP + RUN63),
     ("state_q_unstable", head(0) + KEEP + RUN63 + [3, 1, 1, 0, 0, 5, 1] + RUN63),
     ("state_velocity_huge", head(1) + KEEP + [3, 8, 1, 3, 0, 1, 23] + RUN63),
     ("state_nan", head(0) + KEEP + [4, 2, 1, 1, 0, 1, 0] + RUN63),
-    ("queries_restart", head(0) + KEEP + RUN63 + [6, 7, 1, 8] + RUN63),
+    ("queries_restart", head(0) + KEEP + RUN63 + [6, 7, 1, 9] + RUN63),
 ]
 for name, data in steps:
     write("fuzz_step", name, bytes(data))

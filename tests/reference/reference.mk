@@ -13,15 +13,16 @@ REF_DIR := tests/reference
 REF_BUILD := $(BUILD)/reference
 REF_SRC := $(filter-out $(REF_DIR)/ref_main.c $(REF_DIR)/test_reference.c,$(wildcard $(REF_DIR)/*.c))
 REF_OBJ := $(REF_SRC:%.c=$(REF_BUILD)/%.o)
-REF_INI_OBJ := $(filter %/scene_ini.o %/scene_fields.o,$(HOST_LIB_OBJ))
-REF_CFLAGS := $(filter-out $(REAL_FLAG),$(HOST_CFLAGS)) -DBS_REAL_FLOAT=0 -I$(REF_DIR)
+REF_INI_OBJ := $(REF_BUILD)/host/lib/scene_ini.o $(REF_BUILD)/host/lib/scene_fields.o
+REF_CONFIG_H := $(BUILD)/double/include/bs_build_config.h
+REF_CFLAGS := $(BASE_CFLAGS) -I$(BUILD)/double/include -Icore/include -Iport -Iport/host -Ihost/lib -I$(REF_DIR)
 REF_HEADERS := $(wildcard $(REF_DIR)/*.h host/lib/*.h)
 
 .PHONY: reference reference-test reference-compare
 
 reference: $(BUILD)/bs-reference
 
-$(REF_BUILD)/%.o: %.c $(REF_HEADERS) | deps-build
+$(REF_BUILD)/%.o: %.c $(REF_HEADERS) $(REF_CONFIG_H) | deps-build
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(REF_CFLAGS) -c -o $@ $<
 

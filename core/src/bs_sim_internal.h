@@ -1,0 +1,58 @@
+/* bs_sim_internal.h - what the core's files share about a bs_sim: whether it
+ * is ready, the value read functions return for a bad one, and the band of
+ * x_C the clamp stops hold. */
+#ifndef BS_SIM_INTERNAL_H
+#define BS_SIM_INTERNAL_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "bs_sim_layout.h"
+
+/* bs_sim.ready of an initialised sim ("bsim"); anything else is not ready. */
+#define BS_SIM_READY 0x6273696du
+
+/* The library's own build tag and sizes (core/src/bs_version.c). */
+bs_status bs_build_matches(uint32_t tag, size_t sim_size, size_t scene_size);
+
+static inline int bs_sim_is_ready(const bs_sim *sim)
+{
+    return sim && sim->ready == BS_SIM_READY;
+}
+
+/* BS_E_NULL or BS_E_UNINITIALISED for a sim that is not ready, else BS_OK. */
+static inline bs_status bs_sim_status(const bs_sim *sim)
+{
+    return !sim ? BS_E_NULL : (sim->ready == BS_SIM_READY ? BS_OK : BS_E_UNINITIALISED);
+}
+
+/* A quiet NaN, what read functions return for a sim that is not ready
+ * (built from its bits: the core has no libm and no 0/0). */
+static inline bs_real bs_real_nan(void)
+{
+    union {
+        bs_real value;
+#if BS_REAL_FLOAT
+        uint32_t bits;
+#else
+        uint64_t bits;
+#endif
+    } nan;
+#if BS_REAL_FLOAT
+    nan.bits = 0x7fc00000u;
+#else
+    nan.bits = UINT64_C(0x7ff8000000000000);
+#endif
+    return nan.value;
+}
+
+/* 1 if x_C lies within the clamp stops widened by h/2: Moreau's step lets a
+ * stop be penetrated by about |u_x| dt (micrometres), so a slot centre
+ * further out means the stop did not hold (docs/design.md 5). The step
+ * refuses to end outside this band (BS_E_ESCAPED) and bs_sim_set_state
+ * accepts exactly this band. NaN is outside. */
+static inline int bs_within_stops(const bs_scene *scene, bs_real x)
+{
+    return x >= scene->stop_min - scene->half_thickness && x <= scene->stop_max + scene->half_thickness;
+}
+
+#endif
