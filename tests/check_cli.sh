@@ -9,7 +9,7 @@ bin=${1:-}
 . "$(dirname "$0")/check_lib.sh"
 check_setup tests/check_cli.sh "$bin"
 
-# ---- modes: the five natural frequencies of MODEL.md 8 (Hz, as rounded there)
+# ---- modes: the five natural frequencies of docs/model.md 8 (Hz, as rounded there)
 "$bin" modes configs/fig6.ini >"$tmp/modes.out" 2>"$tmp/modes.err"
 check_status "modes configs/fig6.ini exits 0" 0 $? "$tmp/modes.err"
 if report=$(awk '

@@ -112,7 +112,7 @@ static void test_free_modes_follow_the_discrete_map_and_the_continuous_law(void 
         assert_close("omega: discrete vs omega_k sqrt(1 - D^2)", omega_map, w * sqrt(1 - d * d), 0.0,
                      wh * wh / 12.0 + 2.0 * d * wh);
         assert_close("decay: discrete vs D omega_k", decay_map, d * w, 0.0, wh * wh);
-        assert_close("omega_k vs MODEL.md", w, model.modes.omega[k], 0.0, 2.0 * SUPPORT_EPS);
+        assert_close("omega_k vs docs/model.md", w, model.modes.omega[k], 0.0, 2.0 * SUPPORT_EPS);
     }
 }
 

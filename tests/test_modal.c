@@ -1,4 +1,4 @@
-/* test_modal.c - modal data of the beam (host/lib/modal.c) against MODEL.md 8
+/* test_modal.c - modal data of the beam (host/lib/modal.c) against docs/model.md 8
  * and against the defining equations. */
 #include "support.h"
 
@@ -13,7 +13,7 @@ static const double pi = 3.14159265358979323846;
 
 static void test_fig6_frequencies_match_model_md(void **state)
 {
-    /* MODEL.md 8: bare-beam check values, to 1e-4 relative */
+    /* docs/model.md 8: bare-beam check values, to 1e-4 relative */
     static const double expected_hz[5] = { 260.28, 719.01, 1412.3, 2339.0, 3500.1 };
     int k;
     (void)state;
@@ -88,7 +88,7 @@ static void test_modes_are_normalised_and_satisfy_boundary_conditions(void **sta
 
 static void test_attached_slider_frequency_matches_model_md(void **state)
 {
-    /* MODEL.md 8: ~248 Hz at s = 0.05, ~88 Hz at s = 0.5, 124 Hz near s = 0.25
+    /* docs/model.md 8: ~248 Hz at s = 0.05, ~88 Hz at s = 0.5, 124 Hz near s = 0.25
      * (stated to about 2 significant digits: 1 % tolerance) */
     (void)state;
     support_load("configs/fig6.ini", &file, &scene, &model);

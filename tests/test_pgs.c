@@ -223,7 +223,7 @@ static void test_warm_start_from_solution_needs_one_sweep(void **state)
 }
 
 /* Two contacts whose rows of G are almost parallel (two corners on one face
- * of the slot, MODEL.md 9.5): G = a [I, (1 - d) I; (1 - d) I, I], both pushed
+ * of the slot, docs/model.md 9.5): G = a [I, (1 - d) I; (1 - d) I, I], both pushed
  * in equally. The solution is symmetric and sticks:
  *   P_N = 1 / (a (2 - d)),  P_T = -c_T / (a (2 - d)).
  * Gauss-Seidel from P = 0 gives all to the first contact and then crawls, its

@@ -167,7 +167,7 @@ static void rigid_free_flight(void)
     scene.n_modes = 0;
 }
 
-/* MODEL.md 9.1: after 60 s (3e6 steps) and 600 s the phase is exact to the
+/* docs/model.md 9.1: after 60 s (3e6 steps) and 600 s the phase is exact to the
  * resolution of the reported fraction (2^-24 turns). */
 static void test_excitation_phase_is_exact_after_long_runs(void **state)
 {
@@ -186,7 +186,7 @@ static void test_excitation_phase_is_exact_after_long_runs(void **state)
     }
 }
 
-/* MODEL.md 9.2: x_C advancing by a fraction of its ulp per step (float:
+/* docs/model.md 9.2: x_C advancing by a fraction of its ulp per step (float:
  * 2e-9 m on 0.07 m, ulp 7.5e-9 m) still moves exactly as far as the sum of
  * the increments. */
 static void test_slow_drift_is_not_lost_to_rounding(void **state)

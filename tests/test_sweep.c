@@ -1,5 +1,5 @@
 /* test_sweep.c - the quasi-static PCS sweep (host/lib/sweep.c): the grid, the
- * per-point numbers against a plain bs_sim loop written from MODEL.md 6,
+ * per-point numbers against a plain bs_sim loop written from docs/model.md 6,
  * continuation from rest, the sign of v_mean, determinism and bad options. */
 #include "support.h"
 
@@ -54,7 +54,7 @@ static void test_grid(void **state)
     assert_int_equal(sweep_grid_index(&options, 0.6), -1);
 }
 
-/* MODEL.md 6 as a plain loop: one PCS sim from rest at grid[0]; per point
+/* docs/model.md 6 as a plain loop: one PCS sim from rest at grid[0]; per point
  * move s~, hold, record; periods counted by the monitor's phase wraps. */
 static void reference_sweep(const double *grid, int n, int hold, int record, sweep_point *out)
 {

@@ -2,7 +2,7 @@
  *
  *   q_k'' = h_k = -gamma_k w0'' - omega_k^2 q_k - 2 D omega_k q_k' - N_k(q)
  *
- * Bending-stretching (MODEL.md 3): the stretching energy k_ax/(8 L^2) (q^T I q)^2
+ * Bending-stretching (docs/model.md 3): the stretching energy k_ax/(8 L^2) (q^T I q)^2
  * gives N(q) = (k_ax / 2L^2) (q^T I q) I q. With S = sqrt(k_ax / 2L^2) I held
  * by the scene that is N = (q^T S q) S q: N^2 + N multiply-adds instead of the
  * N^4 of the written triple sum.

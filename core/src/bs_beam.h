@@ -4,7 +4,7 @@
 
 #include "bs_scene.h"
 
-/* force[k] = h_k of MODEL.md 5 per unit modal mass for base acceleration
+/* force[k] = h_k of docs/model.md 5 per unit modal mass for base acceleration
  * base_accel: the cubic term at q, the linear stiffness at q_stiff (q itself
  * for the explicit step; docs/design.md 4), damping at u. Returns an upper
  * bound [1/s^2] of the largest eigenvalue of the explicitly integrated

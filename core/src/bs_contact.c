@@ -12,7 +12,7 @@
  *   g_N   = n.d = cos(alpha) (zeta d_z - h/2 w'^2),   g_T = t.d
  *   (active when g_N < 0; the sign needs no square root)
  *
- * Force directions W = (dg/dq)^T, the published model's (MODEL.md 4):
+ * Force directions W = (dg/dq)^T, the published model's (docs/model.md 4):
  *   slider: dg/d(x_C, z_C, beta) = C [I | A' rho],  C = [n^T; t^T],
  *           A' rho = dA/dbeta rho = ((A rho)_z, -(A rho)_x)
  *   beam:   dg/dq_k = -C e_k + C' d phi_k',   C' = dC/dalpha = [t^T; -n^T],
@@ -29,7 +29,7 @@
  * leaves one of the two well clear): the same contacts, bit for bit, with
  * fewer shape evaluations (docs/design.md 5).
  *
- * Clamp end stops (MODEL.md 9.6): frictionless unilateral contacts on x_C,
+ * Clamp end stops (docs/model.md 9.6): frictionless unilateral contacts on x_C,
  * g = x_C - stop_min (left) and g = stop_max - x_C (right), W = (0, +-1, 0, 0).
  *
  * Generalised mass M = diag(1 (modal), m, m, J_C); with the implicit step the

@@ -6,7 +6,7 @@
  * theta is never formed from a floating time t (in float, Omega t = 46 700 rad
  * after 60 s of a 124 Hz excitation has an ulp of 0.004 rad). The simulator
  * keeps the phase as an unsigned 64-bit fraction of a turn that advances by an
- * integer each step and wraps every period (MODEL.md 9.1).
+ * integer each step and wraps every period (docs/model.md 9.1).
  *
  * sin and cos of the phase need no library: the range reduction is exact on
  * the integer. Its top two bits are the quadrant; within the quadrant the

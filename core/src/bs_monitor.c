@@ -1,6 +1,6 @@
 /* bs_monitor.c - streaming amplitude and transport per excitation period.
  *
- *   amplitude = (max w - min w) / 2 over the steps of the period (MODEL.md 7:
+ *   amplitude = (max w - min w) / 2 over the steps of the period (docs/model.md 7:
  *               the streaming estimate; docs/design.md compares it with the
  *               Hilbert envelope the papers use)
  *   transport = (x_C(end) - x_C(start)) / L, formed from the compensated pair

@@ -3,7 +3,7 @@
  *
  * Unknowns: percussions P = (P_N,1, P_T,1, ..., P_N,n, P_T,n) [N s] (P_N only
  * when the build has no friction). Velocities after the step (Newton-modified):
- * xi = G P + c, G = W^T M^-1 W. Contact laws for each contact i (MODEL.md 4):
+ * xi = G P + c, G = W^T M^-1 W. Contact laws for each contact i (docs/model.md 4):
  *   0 <= P_N  _|_  xi_N >= 0,   |P_T| <= mu P_N,   P_T = -mu P_N sign(xi_T) if xi_T != 0.
  *
  * Gauss-Seidel sweep: visit the contacts in order and solve contact i's 2x2
@@ -21,7 +21,7 @@
  *
  * Subspace step: two corners on the same face of the slot see almost the same
  * beam motion, so their rows of G are nearly parallel and Gauss-Seidel crawls
- * (hundreds of sweeps, MODEL.md 9.5). After each sweep that has not converged,
+ * (hundreds of sweeps, docs/model.md 9.5). After each sweep that has not converged,
  * the modes the sweep reached (take-off, stick, slip +-) define a linear
  * system, rows per contact:
  *   take-off   P_N = 0, P_T = 0
@@ -54,7 +54,7 @@
  * also stops when max_sweeps sweeps are done, or when a sweep did not lower e
  * (stalled: e is at the floor the precision reaches for this G). The residual
  * returned is the one of the P returned, whether converged or not
- * (MODEL.md 9.5: report it, never hide it).
+ * (docs/model.md 9.5: report it, never hide it).
  * With measure_residual off the solve is exactly max_sweeps sweeps: no
  * residual, no stop on it, no subspace step (which picks its result by the
  * residual); the report says "not measured" (residual -1, converged -1).

@@ -7,7 +7,7 @@
 
 /* phi[k] = phi_k(x) [1/sqrt(kg)] and slope[k] = d phi_k / dx [1/(m sqrt(kg))]
  * for k < n_modes. Outside [0, L] the beam is inside a clamp, which moves
- * with the base: both are 0 there (MODEL.md 9.6: never extrapolated). */
+ * with the base: both are 0 there (docs/model.md 9.6: never extrapolated). */
 void bs_shape_eval(const bs_scene *scene, bs_real x, bs_real *phi, bs_real *slope);
 
 /* bs_shape_eval and the beam there: w = sum_k phi_k q_k [m], w_slope = w'. */

@@ -1,5 +1,5 @@
 /* cli_sweep.c - `beamslider sweep SCENE --dir up|down --out FILE.csv [options]`:
- * the quasi-static PCS sweep of MODEL.md 6 (host/lib/sweep.c), one CSV row per
+ * the quasi-static PCS sweep of docs/model.md 6 (host/lib/sweep.c), one CSV row per
  * grid point and a one-line JSON summary on stdout. */
 #include <errno.h>
 #include <math.h>
@@ -14,7 +14,7 @@ static const char sweep_usage[] =
     "usage: beamslider sweep SCENE.ini --dir up|down --out FILE.csv [--from 0] [--to 0.5]\n"
     "                        [--step 0.005] [--hold 100] [--record 25] [--dt DT] [--pgs-iters K]\n"
     "                        [--trace FILE.csv --trace-at S [--trace-periods 5]]\n"
-    "  quasi-static PCS sweep with continuation (MODEL.md 6), from rest at the first point:\n"
+    "  quasi-static PCS sweep with continuation (docs/model.md 6), from rest at the first point:\n"
     "  per grid point s~ (up: --from to --to, down: --to to --from) --hold excitation\n"
     "  periods, then --record periods measured. CSV per point: s, amp_h (mean half\n"
     "  peak-to-peak of w(4L/7) / h), v_mean (x_C displacement / (L periods), positive\n"

@@ -3,7 +3,7 @@
  *   K = diag(omega_k^2),  M = I + m phi phi^T + (J_C + m d^2) phi' phi'^T
  * (phi, phi' = d phi/dx at s; the centre of mass, d below the axis, moves
  * horizontally by d times the slope). The lowest eigenvalue of M^-1 K comes
- * from inverse iteration with the Rayleigh quotient. MODEL.md 8 quotes
+ * from inverse iteration with the Rayleigh quotient. docs/model.md 8 quotes
  * ~248 Hz at s = 0.05, ~88 Hz at s = 0.5, 124 Hz near s = 0.25.
  */
 #include "attached.h"

@@ -14,7 +14,7 @@
  * The ratios cosh(l eta)/cosh(l/2) and sinh(l eta)/sinh(l/2) are evaluated as
  * (e^{l(eta-1/2)} +- e^{-l(eta+1/2)}) / (1 +- e^{-l}): every term is at most 1,
  * so nothing cancels (the written form c3 sinh + c4 cosh loses 7 digits at
- * l = 17 near xi = 1, MODEL.md 3).
+ * l = 17 near xi = 1, docs/model.md 3).
  *
  * omega_k = l_k^2 sqrt(EI / (rho A L^4)); normalisation rho A L int phi^2 = 1
  * and sign c1 > 0 (c1: coefficient of sin(l xi) in the written form:

@@ -5,7 +5,7 @@
 
 #include "bs_config.h"
 
-/* The beam as MODEL.md 3 defines it (SI units). */
+/* The beam as docs/model.md 3 defines it (SI units). */
 typedef struct modal_beam {
     double length;          /* L [m] */
     double thickness;       /* h [m] */

@@ -1,4 +1,4 @@
-/* sweep.c - quasi-static PCS sweep with continuation (MODEL.md 6).
+/* sweep.c - quasi-static PCS sweep with continuation (docs/model.md 6).
  *
  * Per grid point s~ (the state carried over from the previous point):
  *   amp_h  = (1 / N_rec) sum over the recorded periods of a_p / h,

@@ -1,4 +1,4 @@
-/* sweep.h - quasi-static PCS sweep with continuation (MODEL.md 6).
+/* sweep.h - quasi-static PCS sweep with continuation (docs/model.md 6).
  *
  * One bs_sim in the PCS model, started from rest at the first grid point. At
  * each grid point s~ the prescribed position is moved (bs_sim_set_pcs_position,

@@ -278,7 +278,7 @@ cat > "$OUT" <<DOC
 
 Produced by \`make accuracy\` (host/reports/accuracy.sh) on $(date -u +%Y-%m-%d), commit $commit.
 The oracle is \`build/bs-reference\` (tests/reference/), a double-precision implementation of
-MODEL.md written independently of core/ (dense matrices, closed-form mode shapes in long
+docs/model.md written independently of core/ (dense matrices, closed-form mode shapes in long
 double, contact problems solved exactly; tests/reference/README.md says how it is tested).
 Metrics are defined in host/reports/accuracy.sh's header: **w error** is the RMS and max of
 w(4L/7) - w_ref over the first 0.05 s relative to max |w_ref|; the **slow quantities** are
@@ -378,7 +378,7 @@ $fd_rows
 
 Single runs of fig6. The excitation phase stays exact (tests/test_sim.c checks it after
 3e6 and 3e7 steps) and the slow drift of x_C is accumulated without float bias
-(MODEL.md 9.2; tests/test_sim.c). Speeds as above; amplitude: the last 10 s.
+(docs/model.md 9.2; tests/test_sim.c). Speeds as above; amplitude: the last 10 s.
 
 | build | t_end [s] | low-branch speed | high-branch speed | amplitude, last 10 s [h] | s at 10 s | s at t_end | wall [s] |
 |---|---|---|---|---|---|---|---|

@@ -16,14 +16,14 @@ fi
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
 
-# modes: MODEL.md 8 frequencies, relative 1e-4
+# modes: docs/model.md 8 frequencies, relative 1e-4
 if "$bin" modes configs/fig6.ini >"$tmp/modes" 2>&1 && awk -F, '
     BEGIN { split("260.28 719.01 1412.3 2339.0 3500.1", want, " ") }
     $1 ~ /^[0-9]+$/ { n++; d = $3 - want[$1]; if (d < 0) d = -d; if (!(d <= 1e-4 * want[$1])) bad = 1 }
     END { exit (n != 5 || bad) }' "$tmp/modes"; then
-    pass "modes: f_1..f_5 of MODEL.md 8"
+    pass "modes: f_1..f_5 of docs/model.md 8"
 else
-    fail "modes: f_1..f_5 of MODEL.md 8" "$(cat "$tmp/modes")"
+    fail "modes: f_1..f_5 of docs/model.md 8" "$(cat "$tmp/modes")"
 fi
 
 # run: CSV headers identical to host/lib/run.c's

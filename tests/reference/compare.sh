@@ -23,7 +23,7 @@ periods_report() {
             if (n == 0) { printf "%-10s no periods\n", label; exit }
             k = n < 25 ? n : 25; sum = 0
             for (i = n - k + 1; i <= n; i++) sum += a[i]
-            # 1 s windows (MODEL.md 7): mean amplitude before and after the turning point
+            # 1 s windows (docs/model.md 7): mean amplitude before and after the turning point
             lo = 0; ln = 0; hi = 0; hn = 0
             for (i = 1; i <= n; i++) {
                 if (t[i] > tmin - 1 && t[i] <= tmin) { lo += a[i]; ln++ }

@@ -1,6 +1,6 @@
 /* ref_config.h - sizes and constants of the double-precision reference model
  * (tests/reference/, the oracle for core/). Independent of core/: built from
- * /work/shared/spec/MODEL.md only. */
+ * docs/model.md only. */
 #ifndef REF_CONFIG_H
 #define REF_CONFIG_H
 

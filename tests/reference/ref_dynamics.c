@@ -1,4 +1,4 @@
-/* ref_dynamics.c - smooth generalised forces (MODEL.md 3 and 5).
+/* ref_dynamics.c - smooth generalised forces (docs/model.md 3 and 5).
  *
  *   Beam, mode n:  h_n = -gamma_n ddw0(t) - omega_n^2 q_n - 2 D omega_n u_n - N_n(q)
  *   N_n(q) = k_ax / (2 L^2) sum_i sum_j sum_k I_ij I_kn q_i q_j q_k

@@ -1,4 +1,4 @@
-/* ref_dynamics.h - smooth forces of the reference model (MODEL.md 3, 5). */
+/* ref_dynamics.h - smooth forces of the reference model (docs/model.md 3, 5). */
 #ifndef REF_DYNAMICS_H
 #define REF_DYNAMICS_H
 

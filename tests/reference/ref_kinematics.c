@@ -1,4 +1,4 @@
-/* ref_kinematics.c - gaps and force directions (MODEL.md 4).
+/* ref_kinematics.c - gaps and force directions (docs/model.md 4).
  *
  *   A(beta) = [[cos b, sin b], [-sin b, cos b]],  A'(beta) = [[0, 1], [-1, 0]] A(beta)
  *   r_P = (x_C, z_C) + A r_CP          (PCS: x_C := s~ L here)

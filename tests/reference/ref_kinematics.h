@@ -1,5 +1,5 @@
 /* ref_kinematics.h - contact gaps, force directions W_i and w~_i of the
- * reference model (MODEL.md 4), and the clamps' end stops (MODEL.md 9.6). */
+ * reference model (docs/model.md 4), and the clamps' end stops (docs/model.md 9.6). */
 #ifndef REF_KINEMATICS_H
 #define REF_KINEMATICS_H
 
@@ -21,7 +21,7 @@ typedef struct ref_contact {
 } ref_contact;
 
 /* Corner i (0..3) at state q and base motion ex: gap, W_i (the published
- * model's directions, MODEL.md 4) and w~_i. */
+ * model's directions, docs/model.md 4) and w~_i. */
 void ref_kinematics_corner(const ref_scene *scene, const ref_excitation *ex, const double *q, int i,
                            ref_contact *c);
 

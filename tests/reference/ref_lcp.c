@@ -1,4 +1,4 @@
-/* ref_lcp.c - the contact problem of one Moreau step (MODEL.md 4, 5).
+/* ref_lcp.c - the contact problem of one Moreau step (docs/model.md 4, 5).
  *
  *   xi = G P + c; per contact i (rows N, T):
  *     Signorini  0 <= P_N  _|_  xi_N >= 0

@@ -1,4 +1,4 @@
-/* ref_lcp.h - the per-step contact problem of MODEL.md 4-5 and two solvers:
+/* ref_lcp.h - the per-step contact problem of docs/model.md 4-5 and two solvers:
  * exact enumeration of contact modes and uncapped projected Gauss-Seidel. */
 #ifndef REF_LCP_H
 #define REF_LCP_H

@@ -1,12 +1,12 @@
 /* ref_main.c - bs-reference: the double-precision reference model of
- * MODEL.md on the command line (the oracle for core/).
+ * docs/model.md on the command line (the oracle for core/).
  *
  *   bs-reference run SCENE.ini [--t-end T] [--dt DT] [--substeps K] [--model free|pcs]
  *                [--s0 S] [--out FILE.csv] [--every N] [--periods FILE.csv]
  *                [--solver enum|pgs] [--pgs-tol X] [--exhaustive] [--compliance EPS]
  *   bs-reference modes SCENE.ini
  *
- * --compliance is a diagnostic outside MODEL.md (G_ii (1 + EPS)), to
+ * --compliance is a diagnostic outside docs/model.md (G_ii (1 + EPS)), to
  * reproduce a regularised contact solve; the default 0 is the model.
  *
  * Exit status: 0 ok, 1 the run failed (solve, non-finite state, write), 2 bad usage or input. */

@@ -1,4 +1,4 @@
-/* ref_modes.c - bending modes of the spring-clamped beam (MODEL.md 3).
+/* ref_modes.c - bending modes of the spring-clamped beam (docs/model.md 3).
  *
  *   phi(xi) = a1 sin(l xi) + a2 cos(l xi) + a3 E0 + a4 E1,
  *             E0 = e^(-l xi), E1 = e^(-l (1 - xi)), eps = e^(-l)

@@ -1,11 +1,11 @@
 /* ref_modes.h - bending modes of the beam with rotational springs at the
- * clamps (MODEL.md 3), computed in long double for the reference model. */
+ * clamps (docs/model.md 3), computed in long double for the reference model. */
 #ifndef REF_MODES_H
 #define REF_MODES_H
 
 #include "ref_config.h"
 
-/* The beam (SI units), as MODEL.md 3 and 8 define it. */
+/* The beam (SI units), as docs/model.md 3 and 8 define it. */
 typedef struct ref_beam {
     double length;          /* L [m] */
     double thickness;       /* h [m] */
@@ -35,7 +35,7 @@ typedef struct ref_modes {
     double coef_d[REF_MAX_MODES][4];
 } ref_modes;
 
-/* The 4x4 boundary determinant in the bounded basis at lambda (MODEL.md 3:
+/* The 4x4 boundary determinant in the bounded basis at lambda (docs/model.md 3:
  * w = 0, phi'' = +kappa phi' at xi = 0, phi'' = -kappa phi' at xi = 1). */
 long double ref_modes_det(long double lambda, long double kappa);
 

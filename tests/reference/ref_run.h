@@ -39,7 +39,7 @@ typedef struct ref_run_result {
 extern const char ref_run_csv_header[];
 extern const char ref_run_periods_header[];
 
-/* Runs the scene from MODEL.md 6's initial state. Returns 0, or -1 when a
+/* Runs the scene from docs/model.md 6's initial state. Returns 0, or -1 when a
  * step failed or an output could not be written. */
 int ref_run(const ref_scene *scene, const ref_run_options *options, ref_run_result *result);
 

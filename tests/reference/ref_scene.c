@@ -1,4 +1,4 @@
-/* ref_scene.c - reference scene constants (MODEL.md 2-6).
+/* ref_scene.c - reference scene constants (docs/model.md 2-6).
  *
  *   M = diag(1, ..., 1, m, m, J_C) (mass-normalised modes), dense here and
  *   inverted by elimination; a locked slider rotation is a coordinate with no
@@ -29,7 +29,7 @@ int ref_scene_init(ref_scene *scene, const scene_params *p, int substeps, char *
         return -1;
     }
     if (p->implicit) {
-        snprintf(err, err_size, "integrator = implicit: the reference implements MODEL.md 5's explicit midpoint step only");
+        snprintf(err, err_size, "integrator = implicit: the reference implements docs/model.md 5's explicit midpoint step only");
         return -1;
     }
     if (substeps < 1) {

@@ -1,4 +1,4 @@
-/* ref_scene.h - the reference model's scene: every constant of MODEL.md 2-6
+/* ref_scene.h - the reference model's scene: every constant of docs/model.md 2-6
  * in double, from the project's scene parameters (host/lib/scene_params.h). */
 #ifndef REF_SCENE_H
 #define REF_SCENE_H

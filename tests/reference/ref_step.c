@@ -1,4 +1,4 @@
-/* ref_step.c - Moreau midpoint time-stepping (MODEL.md 5), fixed step dt.
+/* ref_step.c - Moreau midpoint time-stepping (docs/model.md 5), fixed step dt.
  *
  *   t_M = t_B + dt/2,  q_M = q_B + dt/2 u_B,  h_M = h(t_M, q_M, u_B)
  *   closed set: g_N,i(q_M) < 0 (corners and end stops)
@@ -9,7 +9,7 @@
  *               u_E = u_B + M^-1 (h_M dt + W P)
  *   q_E = q_M + dt/2 u_E,  t_E = t_B + dt  (t from the step count, never summed)
  *   Warm start: each contact's percussion and mode of the previous step.
- *   options->compliance (diagnostic, default 0: MODEL.md has none) replaces
+ *   options->compliance (diagnostic, default 0: docs/model.md has none) replaces
  *   G_ii by G_ii (1 + compliance), to reproduce a regularised solver. */
 #include "ref_step.h"
 

@@ -1,4 +1,4 @@
-/* ref_step.h - one Moreau midpoint step of the reference model (MODEL.md 5, 6). */
+/* ref_step.h - one Moreau midpoint step of the reference model (docs/model.md 5, 6). */
 #ifndef REF_STEP_H
 #define REF_STEP_H
 
@@ -13,7 +13,7 @@ typedef struct ref_step_options {
     int exhaustive;          /* enumeration: try every mode in every step (ambiguity check) */
     double pgs_tol_rel;      /* PGS: sum |dP| <= tol sum |P| */
     long pgs_max_sweeps;     /* PGS: safety stop (a failure, not a cap) */
-    double compliance;       /* diagnostic, not MODEL.md: G_ii (1 + compliance); 0 by default */
+    double compliance;       /* diagnostic, not docs/model.md: G_ii (1 + compliance); 0 by default */
 } ref_step_options;
 
 /* Default: enumeration; PGS tolerance 1e-13, safety stop 1e8 sweeps; no compliance. */
@@ -38,7 +38,7 @@ typedef struct ref_step_report {
     int ambiguous;          /* more than one solution with different velocities */
 } ref_step_report;
 
-/* MODEL.md 6: q_b = 0, u = 0, beta = 0, x_C = s0 L (PCS: s~ L), z_C = -d + w0(0). */
+/* docs/model.md 6: q_b = 0, u = 0, beta = 0, x_C = s0 L (PCS: s~ L), z_C = -d + w0(0). */
 void ref_state_init(const ref_scene *scene, ref_state *state);
 
 /* One step of dt_sub. Returns 0, or -1 if the contact solve failed or the

@@ -1,4 +1,4 @@
-/* test_reference.c - the reference model (tests/reference/) against MODEL.md 8
+/* test_reference.c - the reference model (tests/reference/) against docs/model.md 8
  * check values, analytic cases and the 50 frictional contact problems of
  * tests/data/fc2d_cases.json. Links no core object. Run from the repository
  * root (reads configs/fig6.ini and tests/data/fc2d_cases.json).
@@ -66,7 +66,7 @@ static void build(ref_scene *scene, const scene_params *p)
 
 static void test_modes_match_model_check_values(void **state)
 {
-    /* MODEL.md 8, rounded to 5 significant digits there: relative 1e-4 */
+    /* docs/model.md 8, rounded to 5 significant digits there: relative 1e-4 */
     static const double f_want[5] = { 260.28, 719.01, 1412.3, 2339.0, 3500.1 };
     static const double gamma_want[5] = { 0.10333, 0.0, 0.044932, 0.0, 0.028315 };
     static ref_scene scene;
@@ -141,7 +141,7 @@ static void test_modes_satisfy_boundary_conditions_orthonormality_and_rayleigh(v
         /* |phi| is O(10 / sqrt(kg)); the basis is bounded, so the ends vanish to rounding */
         assert_close("phi(0)", at0[0], 0.0, 1e-13, 0.0);
         assert_close("phi(1)", at1[0], 0.0, 1e-13, 0.0);
-        /* MODEL.md 3: EI w'' = +k_r w' at x = 0, EI w'' = -k_r w' at x = L */
+        /* docs/model.md 3: EI w'' = +k_r w' at x = 0, EI w'' = -k_r w' at x = L */
         assert_close("phi''(0) - kappa phi'(0)", at0[2] - kappa * at0[1], 0.0, 1e-10 * fabsl(kappa * at0[1]), 0.0);
         assert_close("phi''(1) + kappa phi'(1)", at1[2] + kappa * at1[1], 0.0, 1e-10 * fabsl(kappa * at1[1]), 0.0);
         /* rho A L int phi_i phi_j = delta_ij by an independent rule */
@@ -223,7 +223,7 @@ static void test_stretching_is_the_gradient_of_the_stretching_energy(void **stat
 
 /* The gap of corner i with the beam point held at abscissa x_b (material
  * point), and the beam surface offset along the unit normal (unit = 1) or
- * along (-w', 1) (unit = 0). Written from MODEL.md 4 independently of
+ * along (-w', 1) (unit = 0). Written from docs/model.md 4 independently of
  * ref_kinematics.c. */
 static void material_gap(const ref_scene *s, const ref_excitation *ex, const double *q, int i, double x_b, int unit,
                          double g[2])
@@ -388,7 +388,7 @@ static void test_excitation_phase_is_exact_after_a_million_periods(void **state)
 
 /* ---- free beam mode -------------------------------------------------------- */
 
-/* One step of MODEL.md 5 for q'' + 2 D omega q' + omega^2 q = 0 */
+/* One step of docs/model.md 5 for q'' + 2 D omega q' + omega^2 q = 0 */
 static void scalar_midpoint(double omega, double damping, double dt, double *q, double *u)
 {
     const double q_m = *q + 0.5 * dt * *u;

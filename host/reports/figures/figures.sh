@@ -32,7 +32,7 @@ mkdir -p "$DATA" "$FIG"
 
 # ---------------------------------------------------------------------------
 # 1. Simulations: NAME ARGS... per line, the longest first. The sweeps use
-# the defaults of MODEL.md 6: s from 0 to 0.5 in steps of 0.005, 100 periods
+# the defaults of docs/model.md 6: s from 0 to 0.5 in steps of 0.005, 100 periods
 # held and 25 recorded per point; the fig6 sweeps also trace s = 0.3 (Fig. 2).
 {
     for dir in up down; do

@@ -107,7 +107,7 @@ END {
         print "Sweeps: s = 0 to 0.5 in steps of 0.005, 100 excitation periods held and 25 recorded per point, each"
         print "sweep from rest. Free runs: the scene's t_end. Cells with two numbers: up sweep / down sweep."
         print ""
-        print "| quantity | MODEL.md 8 / seed paper | fig6 (five modes) | fig6_1mode (one mode) | agreement |"
+        print "| quantity | docs/model.md 8 / seed paper | fig6 (five modes) | fig6_1mode (one mode) | agreement |"
         print "|---|---|---|---|---|"
         row("turning point of the free run (min s)", "0.24-0.25 (fig6); ~0.24 (seed paper, one mode)", "turn",
             "fig6: " (n("fig6_b_s_min") >= 0.24 && n("fig6_b_s_min") <= 0.25 ? "yes" : \
@@ -131,7 +131,7 @@ END {
         row("free trajectory: follows the low branch, jumps, follows the high branch", "yes (the papers' Fig. 1b)",
             "follow", both("follow") " (both >= 90 %, jump inside the down sweep's)")
     } else {
-        print "| scene | label (MODEL.md 8) | what the free run did | deciding numbers (criterion) | matches |"
+        print "| scene | label (docs/model.md 8) | what the free run did | deciding numbers (criterion) | matches |"
         print "|---|---|---|---|---|"
         scenario_row("fig6", "signature")
         scenario_row("fig7", "trivial")
