@@ -120,6 +120,7 @@ endif
 test-one: $(TEST_BIN) $(OBJ)/beamslider
 	@set -e; for t in $(TEST_BIN); do echo "== $$t"; ./$$t; done
 	@sh tests/check_core_symbols.sh $(REAL) $(CORE_OBJ)
+	@sh tests/check_core_includes.sh
 	@sh tests/check_cli.sh $(OBJ)/beamslider
 	@sh tests/check_configs.sh $(OBJ)/beamslider
 
