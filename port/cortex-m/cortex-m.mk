@@ -18,12 +18,12 @@
 #   CM_TARGETS       cortex-m4f cortex-m7 cortex-m3 cortex-m0plus
 #   CM_TOOLS_OK      1 if $(CM_CC) and $(CM_QEMU) are on PATH, else empty
 #   CM_TOOLS_MSG     a one-line notice to print when skipping because CM_TOOLS_OK is empty
-#   CM_RUN, CM_COUNT commands taking "ELF TARGET [TIMEOUT_S]" (run.sh, count.sh; see there)
+#   CM_RUN, CM_COUNT commands taking "ELF TARGET [TIMEOUT_S]" (run.sh here, tests/qemu/count.sh)
 #   CM_CPU_<T>, CM_MACHINE_<T>, CM_MAP_<T>   per target: CPU flags, QEMU -M, memory map
 #
 # Example
 #     include port/cortex-m/cortex-m.mk
-#     $(call cm_image,bench,cortex-m4f,bench/main.c core/src/bs_sim.c,-Icore -DBS_REAL_FLOAT=1)
+#     $(call cm_image,bench,cortex-m4f,bench/main.c $(wildcard core/src/*.c),-Ibuild/mcu -Icore/include -Icore/src -Iport/embedded)
 #     cm-bench: $(call cm_elf,bench,cortex-m4f)
 #     	$(if $(CM_TOOLS_OK),$(CM_COUNT) $< cortex-m4f,@echo "$(CM_TOOLS_MSG)")
 #
@@ -78,7 +78,7 @@ CM_PORT_SRC := $(CM_DIR)/startup.c $(CM_DIR)/bs_board.c
 CM_TOOLS_OK := $(if $(and $(shell command -v $(CM_CC) 2>/dev/null),$(shell command -v $(CM_QEMU) 2>/dev/null)),1)
 CM_TOOLS_MSG := cortex-m: skipped: needs $(CM_CC) and $(CM_QEMU) on PATH (apt-get install gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm)
 CM_RUN = sh $(CM_DIR)/run.sh
-CM_COUNT = CM_BUILD='$(CM_BUILD)' sh $(CM_DIR)/count.sh
+CM_COUNT = CM_BUILD='$(CM_BUILD)' sh tests/qemu/count.sh
 
 cm_elf = $(CM_BUILD)/$(strip $2)/$(strip $1).elf
 cm_image = $(eval $(call cm__image,$(strip $1),$(strip $2),$(strip $3),$4))
