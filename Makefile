@@ -2,7 +2,8 @@
 #
 #   make              build build/beamslider (REAL precision)
 #   make run          build and run the fig6 scene (60 s), print its summary
-#   make test         build and run every test, float and double
+#   make test         build and run the tests, float and double (under two minutes)
+#   make test-long    the slow checks: valgrind, minute-long fuzzing, whole runs under QEMU
 #   make lib          the core as a static library: build/lib/libbeamslider-REAL.a
 #                     (with TARGET=cortex-m4f SCENE=fig6: for that target and scene)
 #   make install PREFIX=/usr/local   the library in both precisions, its headers,
@@ -73,7 +74,7 @@ TEST_LIBS := -lcmocka -lcjson $(HOST_LIBS)
 BUILD_PACKAGES := gcc make libc6-dev libinih-dev
 TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev libcjson-dev binutils
 
-.PHONY: all run test test-one test-sweeps lib install configs fields accuracy-check clean deps-build deps-test .force
+.PHONY: all run test test-long test-one embedded-long test-sweeps lib install configs fields accuracy-check clean deps-build deps-test .force
 .SECONDARY:
 .DEFAULT_GOAL := all
 
@@ -109,6 +110,12 @@ $(OBJ)/tests/%.o: tests/%.c $(wildcard tests/*.h host/*/*.h core/*/*.h) $(CONFIG
 $(OBJ)/tests/test_%: $(OBJ)/tests/test_%.o $(OBJ)/tests/support.o $(HOST_LIB_OBJ) $(CORE_OBJ)
 	$(CC) $(CFLAGS) -o $@ $^ $(TEST_LIBS)
 
+# Fragments append test targets to TEST_EXTRA (part of `make test`, which must
+# stay under two minutes on a 2-core machine) or TEST_LONG (`make test-long`:
+# the slow checks).
+TEST_EXTRA := test-sweeps accuracy-check
+TEST_LONG :=
+
 include tests/embedded/embedded.mk
 
 ifeq ($(TARGET),host)
@@ -133,17 +140,21 @@ test-sweeps:
 	    $(MAKE) --no-print-directory -s REAL=$$real $(SWEEPS_FLAGS) $(SWEEPS_BUILD)/$$real/tests/test_pgs; \
 	    echo "== $(SWEEPS_BUILD)/$$real/tests/test_pgs (BS_WITH_SUBSPACE=0)"; $(SWEEPS_BUILD)/$$real/tests/test_pgs; done
 
-# Fragments of the other tools (figures, reference, robustness) add their own
-# targets and append test targets to TEST_EXTRA.
-TEST_EXTRA := test-sweeps accuracy-check
+# Fragments of the other tools (reports, reference, robustness) add their own
+# targets and test targets (TEST_EXTRA, TEST_LONG, above).
 -include host/reports/reports.mk tests/reference/reference.mk tests/robustness.mk
 
+# Builds run two at a time (-j2, the prerequisites); the tests themselves in order.
 test: deps-test
-	$(MAKE) --no-print-directory REAL=double test-one
-	$(MAKE) --no-print-directory REAL=float test-one
-	$(MAKE) --no-print-directory embedded-test
+	$(MAKE) --no-print-directory -j2 REAL=double test-one
+	$(MAKE) --no-print-directory -j2 REAL=float test-one
+	$(MAKE) --no-print-directory -j2 embedded-test
 	$(if $(strip $(TEST_EXTRA)),$(MAKE) --no-print-directory $(TEST_EXTRA))
 	@echo "make test: all tests passed (double and float)"
+
+test-long: deps-test
+	$(if $(strip $(TEST_LONG)),$(MAKE) --no-print-directory $(TEST_LONG))
+	@echo "make test-long: all long tests passed"
 
 # Compile-time scene headers for embedded builds: every scenario file
 # (mssp2023.ini is only a base).

@@ -2,7 +2,8 @@
 # check_embedded.sh TARGET:ELF:HOST_BINARY... - runs each firmware image under
 # QEMU (port/cortex-m/run.sh) and its host twin, and requires the same output
 # line for line: the same states, bit for bit, on target and host. A CPU fault
-# (status 99), a hang (124) or any other failure of either side fails.
+# (status 99), a hang (124) or any other failure of either side fails. Env:
+# CHECK_EMBEDDED_TIMEOUT, seconds per QEMU run (default 120).
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 failed=0
@@ -13,7 +14,7 @@ for pair in "$@"; do
     elf=${rest%%:*}
     host=${rest#*:}
     name=$(basename "$elf" .elf)
-    sh port/cortex-m/run.sh "$elf" "$target" 120 > "$tmp/target.out" 2> "$tmp/target.err"
+    sh port/cortex-m/run.sh "$elf" "$target" "${CHECK_EMBEDDED_TIMEOUT:-120}" > "$tmp/target.out" 2> "$tmp/target.err"
     status=$?
     if [ "$status" -ne 0 ]; then
         echo "FAIL $target $name: exit status $status under QEMU: $(tail -n 2 "$tmp/target.err" | tr '\n' ' ')"

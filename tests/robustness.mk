@@ -10,18 +10,18 @@
 #                         AddressSanitizer + UndefinedBehaviorSanitizer
 #   make robustness-valgrind  the test programs and the CLI under valgrind
 #                         memcheck (test_sim: all but its two long runs)
-#   make fuzz-short       every fuzz target for FUZZ_TEST_SECONDS (60) each,
-#                         FUZZ_JOBS (2) at a time
+#   make fuzz-short       a smoke run: every fuzz target for FUZZ_TEST_SECONDS (5)
+#                         each, FUZZ_JOBS (2) at a time
 #   make robustness-cli   regression checks of the CLI fixes, float and double
 #
-# `make test` runs robustness-cli, robustness-asan, robustness-valgrind and fuzz-short
-# (TEST_EXTRA). Knobs: FUZZ_CC (clang), ASAN_CC (gcc), FUZZ_SECONDS,
+# `make test` runs robustness-cli, robustness-asan and fuzz-short (TEST_EXTRA);
+# `make test-long` robustness-valgrind and fuzz (TEST_LONG). Knobs: FUZZ_CC (clang), ASAN_CC (gcc), FUZZ_SECONDS,
 # FUZZ_TEST_SECONDS.
 
 FUZZ_CC ?= clang
 ASAN_CC ?= gcc
 FUZZ_SECONDS ?= 60
-FUZZ_TEST_SECONDS ?= 60
+FUZZ_TEST_SECONDS ?= 5
 FUZZ_JOBS ?= 2
 FUZZ_BUILD := $(BUILD)/fuzz
 # fuzz_step_fig6_1mode, fuzz_step_fig6_frictionless: the core compiled against
@@ -94,7 +94,7 @@ fuzz_dict = $(if $(filter fuzz_scene,$1),-dict=tests/fuzz/scene.dict)
 # in $(FUZZ_BUILD)/corpus, crashes to $(FUZZ_BUILD)/artifacts.
 fuzz_run = sh tests/fuzz/run_fuzz.sh $(FUZZ_BUILD)/$1 $2 $(FUZZ_BUILD)/corpus/$1 $(call fuzz_seeds,$1) $(FUZZ_BUILD)/artifacts $(call fuzz_dict,$1)
 
-.PHONY: fuzz fuzz-short fuzz-build fuzz-coverage fuzz-deps robustness-asan robustness-valgrind robustness-deps \
+.PHONY: fuzz fuzz-short fuzz-minute fuzz-build fuzz-coverage fuzz-deps robustness-asan robustness-valgrind robustness-deps \
         robustness-cli
 
 fuzz-deps:
@@ -104,6 +104,10 @@ fuzz-build: $(FUZZ_TARGETS:%=$(FUZZ_BUILD)/%)
 
 fuzz: fuzz-build
 	@set -e; $(foreach t,$(FUZZ_TARGETS),$(call fuzz_run,$t,$(FUZZ_SECONDS));)
+
+# fuzz-short with FUZZ_SECONDS per target (`make test-long`)
+fuzz-minute: fuzz-build
+	@$(MAKE) --no-print-directory FUZZ_TEST_SECONDS=$(FUZZ_SECONDS) fuzz-short
 
 fuzz-short: fuzz-build
 	@$(MAKE) --no-print-directory -j$(FUZZ_JOBS) $(FUZZ_TARGETS:%=fuzz-short-%)
@@ -186,4 +190,5 @@ robustness-cli:
 	@sh tests/fuzz/check_robustness_cli.sh $(BUILD)/double/beamslider
 	@sh tests/fuzz/check_robustness_cli.sh $(BUILD)/float/beamslider
 
-TEST_EXTRA += robustness-cli robustness-asan robustness-valgrind fuzz-short
+TEST_EXTRA += robustness-cli robustness-asan fuzz-short
+TEST_LONG += robustness-valgrind fuzz-minute

@@ -38,6 +38,8 @@ EMB_SRC := tests/embedded/scene_run.c $(CORE_SRC)
 EMB_CHECKS := cortex-m4f:fig6:float:20000 cortex-m4f:fig6_1mode:float:20000 \
               cortex-m7:fig6:double:20000 cortex-m7:fig6_1mode:float:20000 \
               cortex-m3:fig6_1mode:float:2000 cortex-m0plus:fig6_1mode:float:2000
+# ... and in `make test-long`, the scenes' whole runs (t_end / dt steps)
+EMB_LONG_CHECKS := cortex-m4f:fig6_1mode:float:BS_SCENE_STEPS cortex-m4f:fig6:float:BS_SCENE_STEPS
 # TARGET:REAL per scene for `make embedded-report`
 EMB_COST_TARGETS := cortex-m4f:float cortex-m7:float cortex-m7:double cortex-m3:float cortex-m0plus:float
 EMB_COST_SCENES := fig6 fig6_1mode fig6_frictionless
@@ -56,6 +58,8 @@ emb_steps = $(if $(filter cortex-m3 cortex-m0plus,$1),2000,20000)
 emb_word = $(word $2,$(subst :, ,$1))
 $(foreach c,$(EMB_CHECKS),$(call emb_image,check-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1),\
     $(call emb_word,$c,2),$(call emb_word,$c,3),$(call emb_word,$c,4),subspace,))
+$(foreach c,$(EMB_LONG_CHECKS),$(call emb_image,long-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1),\
+    $(call emb_word,$c,2),$(call emb_word,$c,3),$(call emb_word,$c,4),subspace,-DBS_RUN_EVERY=100000))
 $(foreach s,$(EMB_COST_SCENES),$(foreach t,$(EMB_COST_TARGETS),$(call emb_image,cost-$s-$(call emb_word,$t,2),\
     $(call emb_word,$t,1),$s,$(call emb_word,$t,2),$(call emb_steps,$(call emb_word,$t,1)),subspace,-DBS_RUN_COST=1)))
 $(foreach s,$(EMB_SWEEPS_SCENES),$(foreach t,$(EMB_SWEEPS_TARGETS),$(call emb_image,cost-$s-$(call emb_word,$t,2)-sweeps,\
@@ -73,12 +77,14 @@ $(EMB_HOST)/$1.$2.$3: tests/embedded/scene_run.c tests/embedded/bs_board_host.c 
         $(wildcard core/*/*.h) configs/$1.h $(call emb_config_h,$1,$2,subspace)
 	@mkdir -p $$(dir $$@)
 	$$(CC) -O2 $$(BASE_CFLAGS) -I$(EMB_CONFIG)/$1.$2.subspace -Icore/include -Icore/src -Iport/host \
-	    -Iport/cortex-m -I. -DBS_RUN_STEPS=$3 -o $$@ tests/embedded/scene_run.c tests/embedded/bs_board_host.c \
+	    -Iport/cortex-m -I. -DBS_RUN_STEPS=$3 $4 -o $$@ tests/embedded/scene_run.c tests/embedded/bs_board_host.c \
 	    $(CORE_SRC) -lm
 endef
 EMB_HOST_TWINS := $(sort $(foreach c,$(EMB_CHECKS),$(call emb_word,$c,2):$(call emb_word,$c,3):$(call emb_word,$c,4)))
+$(foreach c,$(EMB_LONG_CHECKS),$(eval $(call emb__host,$(call emb_word,$c,2),$(call emb_word,$c,3),$(call emb_word,$c,4),-DBS_RUN_EVERY=100000)))
 $(foreach c,$(EMB_HOST_TWINS),$(eval $(call emb__host,$(call emb_word,$c,1),$(call emb_word,$c,2),$(call emb_word,$c,3))))
 
+EMB_LONG_PAIRS := $(foreach c,$(EMB_LONG_CHECKS),$(call emb_word,$c,1):$(call cm_elf,long-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1)):$(EMB_HOST)/$(call emb_word,$c,2).$(call emb_word,$c,3).$(call emb_word,$c,4))
 EMB_CHECK_PAIRS := $(foreach c,$(EMB_CHECKS),$(call emb_word,$c,1):$(call cm_elf,check-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1)):$(EMB_HOST)/$(call emb_word,$c,2).$(call emb_word,$c,3).$(call emb_word,$c,4))
 
 embedded-test: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_CHECK_PAIRS),$(call emb_word,$p,2) $(call emb_word,$p,3)))
@@ -86,6 +92,11 @@ embedded-test: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_CHECK_PAIRS),$(call emb_wor
 	$(if $(CM_TOOLS_OK),@CM_BUILD=$(CM_BUILD) sh tests/qemu/selftest.sh)
 	$(if $(CM_TOOLS_OK),@set -e; $(foreach c,$(EMB_CHECKS),NM=arm-none-eabi-nm sh tests/check_core_symbols.sh \
 	    $(call emb_word,$c,3) $(CM_BUILD)/$(call emb_word,$c,1)/check-$(call emb_word,$c,2)-$(call emb_word,$c,3).obj/core/src/*.o;))
+
+# The whole runs of EMB_LONG_CHECKS against their host twins (`make test-long`).
+embedded-long: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_LONG_PAIRS),$(call emb_word,$p,2) $(call emb_word,$p,3)))
+	$(if $(CM_TOOLS_OK),@CHECK_EMBEDDED_TIMEOUT=1800 sh tests/check_embedded.sh $(EMB_LONG_PAIRS),@echo "$(CM_TOOLS_MSG)")
+TEST_LONG += embedded-long
 
 # report arguments TARGET:SCENE:REAL:SOLVE:ELF (whole runs: SOLVE is subspace-whole or
 # sweeps-whole; -O2 images: subspace-O2 or sweeps-O2)

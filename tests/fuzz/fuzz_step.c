@@ -186,35 +186,6 @@ static const target targets[] = {
 
 static int verbose; /* FUZZ_VERBOSE set: print what an input does (to read a reproducer) */
 
-/* New contact-solve settings from the input: accepted exactly when valid,
- * and nothing changes when refused. */
-static void set_solver(input *in)
-{
-    bs_solver_options options, got;
-    const uint32_t before = bs_sim_hash(&sim);
-    int valid;
-    bs_status status;
-
-    bs_sim_get_solver(&sim, &options);
-    options.max_sweeps = take_int(in, options.max_sweeps);
-    if (options.max_sweeps > FUZZ_MAX_SWEEPS && options.max_sweeps <= BS_SOLVER_MAX_SWEEPS && !getenv("FUZZ_STRICT"))
-        options.max_sweeps = FUZZ_MAX_SWEEPS;
-    options.tol_rel = take_value(in, options.tol_rel);
-    options.tol_abs = take_value(in, options.tol_abs);
-    options.measure_residual = (int)(take_byte(in) % 3) - (take_byte(in) & 1); /* -1 .. 2 */
-    valid = options.max_sweeps >= 1 && options.max_sweeps <= BS_SOLVER_MAX_SWEEPS
-            && fuzz_finite(options.tol_rel) && options.tol_rel >= BS_R(0.0) && fuzz_finite(options.tol_abs)
-            && options.tol_abs >= BS_R(0.0) && (options.measure_residual == 0 || options.measure_residual == 1);
-    status = bs_sim_set_solver(&sim, &options);
-    if (status != (valid ? BS_OK : BS_E_ARGUMENT))
-        fuzz_fail("bs_sim_set_solver: wrong status");
-    bs_sim_get_solver(&sim, &got);
-    if (valid && memcmp(&got, &options, sizeof got) != 0)
-        fuzz_fail("bs_sim_set_solver did not store the options");
-    if (bs_sim_hash(&sim) != before)
-        fuzz_fail("bs_sim_set_solver changed the state");
-}
-
 static void edit_scene(input *in)
 {
     const int which = (int)(take_byte(in) % TARGETS);
@@ -330,6 +301,36 @@ static void set_state(input *in)
                         (double)got[p][k]);
                 fuzz_fail("bs_sim_set_state did not store what it was given");
             }
+}
+
+/* New contact-solve settings from the input: accepted exactly when valid,
+ * and nothing changes when refused. */
+static void set_solver(input *in)
+{
+    bs_solver_options options, got;
+    const uint32_t before = bs_sim_hash(&sim);
+    int valid;
+    bs_status status;
+
+    bs_sim_get_solver(&sim, &options);
+    options.max_sweeps = take_int(in, options.max_sweeps);
+    if (options.max_sweeps > FUZZ_MAX_SWEEPS && options.max_sweeps <= BS_SOLVER_MAX_SWEEPS && !getenv("FUZZ_STRICT"))
+        options.max_sweeps = FUZZ_MAX_SWEEPS;
+    options.tol_rel = take_value(in, options.tol_rel);
+    options.tol_abs = take_value(in, options.tol_abs);
+    options.measure_residual = (int)(take_byte(in) % 3) - (take_byte(in) & 1); /* -1 .. 2 */
+    valid = options.max_sweeps >= 1 && options.max_sweeps <= BS_SOLVER_MAX_SWEEPS
+            && fuzz_finite(options.tol_rel) && options.tol_rel >= BS_R(0.0) && fuzz_finite(options.tol_abs)
+            && options.tol_abs >= BS_R(0.0) && (options.measure_residual == 0 || options.measure_residual == 1);
+    status = bs_sim_set_solver(&sim, &options);
+    if (status != (valid ? BS_OK : BS_E_ARGUMENT))
+        fuzz_fail("bs_sim_set_solver: wrong status");
+    bs_sim_get_solver(&sim, &got);
+    if (valid && (got.max_sweeps != options.max_sweeps || !same(got.tol_rel, options.tol_rel)
+                  || !same(got.tol_abs, options.tol_abs) || got.measure_residual != options.measure_residual))
+        fuzz_fail("bs_sim_set_solver did not store the options");
+    if (bs_sim_hash(&sim) != before)
+        fuzz_fail("bs_sim_set_solver changed the state");
 }
 
 int LLVMFuzzerInitialize(int *argc, char ***argv);
