@@ -3,11 +3,12 @@
 #   make              build build/beamslider (REAL precision)
 #   make run          build and run the fig6 scene (60 s), print its summary
 #   make test         build and run every test, float and double
-#   make lib          the core as a static library: build/lib/libbeamslider-REAL.a
-#                     (with TARGET=cortex-m4f SCENE=fig6: for that target and scene)
-#   make install PREFIX=/usr/local   the library in both precisions, its headers,
-#                     pkg-config files (beamslider-double, beamslider-float) and the
-#                     CMake package beamslider
+#   make lib          the core as static libraries: build/lib/libbeamslider-double.a and
+#                     -float.a (with TARGET=cortex-m4f SCENE=fig6 REAL=float: for that
+#                     target and compiled scene, build/lib/cortex-m4f/; port/lib.mk)
+#   make install [PREFIX=/usr/local] [DESTDIR=]   the library in both precisions, its
+#                     headers, pkg-config files (beamslider-double, beamslider-float),
+#                     the CMake package beamslider and the licence (make uninstall)
 #   make fields       docs/fields.md: every scene field (also `beamslider fields`)
 #   make configs      regenerate the compile-time scene headers configs/*.h
 #   make test-sweeps  the contact solve's tests built with BS_WITH_SUBSPACE=0
@@ -73,7 +74,7 @@ TEST_LIBS := -lcmocka -lcjson $(HOST_LIBS)
 BUILD_PACKAGES := gcc make libc6-dev libinih-dev
 TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev libcjson-dev binutils
 
-.PHONY: all run test test-one test-sweeps lib install configs fields accuracy-check clean deps-build deps-test .force
+.PHONY: all run test test-one test-sweeps lib install uninstall configs fields accuracy-check clean deps-build deps-test .force
 .SECONDARY:
 .DEFAULT_GOAL := all
 
@@ -110,6 +111,7 @@ $(OBJ)/tests/test_%: $(OBJ)/tests/test_%.o $(OBJ)/tests/support.o $(HOST_LIB_OBJ
 	$(CC) $(CFLAGS) -o $@ $^ $(TEST_LIBS)
 
 include tests/embedded/embedded.mk
+include port/lib.mk
 
 ifeq ($(TARGET),host)
 run: all
