@@ -68,7 +68,8 @@ HOST_LIB_OBJ := $(HOST_LIB_SRC:%.c=$(OBJ)/%.o)
 HOST_LIBS := -linih -lm
 
 TESTS := $(basename $(notdir $(wildcard tests/test_*.c)))
-TEST_BIN := $(TESTS:%=$(OBJ)/tests/%)
+# ... and the C++ one (tests/test_cxx.cpp, below)
+TEST_BIN := $(TESTS:%=$(OBJ)/tests/%) $(OBJ)/tests/test_cxx
 TEST_LIBS := -lcmocka -lcjson $(HOST_LIBS)
 
 BUILD_PACKAGES := gcc make libc6-dev libinih-dev
@@ -112,6 +113,19 @@ $(OBJ)/tests/test_%: $(OBJ)/tests/test_%.o $(OBJ)/tests/support.o $(HOST_LIB_OBJ
 
 include tests/embedded/embedded.mk
 include port/lib.mk
+
+# C++: tests/test_cxx.cpp, the public headers and a scene header as C++11, linked
+# with the core compiled for that scene in this REAL (host port, CFLAGS).
+CXX ?= g++
+CXXFLAGS ?= -O2 -g
+CXX_WARNINGS := -std=c++11 -Wall -Wextra -Werror -pedantic -Wundef -Wshadow
+CXX_SCENE := fig6_1mode
+CXX_CORE := $(BUILD)/lib/host/libbeamslider-$(REAL)-$(CXX_SCENE).a
+$(call lib_archive,$(CXX_CORE),$(CC),$(CFLAGS) $(BASE_CFLAGS) $(NO_LOOP_CALLS) -Iport/host -I.,$(AR),$(REAL),\
+    'BS_SCENE_CONFIG="configs/$(CXX_SCENE).h"')
+$(OBJ)/tests/test_cxx: tests/test_cxx.cpp $(CXX_CORE) $(wildcard core/include/*.h) | deps-test
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) $(CXX_WARNINGS) -I$(CXX_CORE:.a=.obj)/include -Icore/include -I. -o $@ $< $(CXX_CORE) -lm
 
 ifeq ($(TARGET),host)
 run: all
