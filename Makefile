@@ -73,7 +73,7 @@ TEST_BIN := $(TESTS:%=$(OBJ)/tests/%) $(OBJ)/tests/test_cxx
 TEST_LIBS := -lcmocka -lcjson $(HOST_LIBS)
 
 BUILD_PACKAGES := gcc make libc6-dev libinih-dev
-TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev libcjson-dev binutils
+TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev libcjson-dev binutils g++ cmake pkg-config
 
 .PHONY: all run test test-one test-sweeps lib install uninstall configs fields accuracy-check clean deps-build deps-test .force
 .SECONDARY:
@@ -152,6 +152,7 @@ test-sweeps:
 # targets and append test targets to TEST_EXTRA.
 TEST_EXTRA := test-sweeps accuracy-check
 -include host/reports/reports.mk tests/reference/reference.mk tests/robustness.mk
+include tests/consumer/consumer.mk
 
 test: deps-test
 	$(MAKE) --no-print-directory REAL=double test-one
