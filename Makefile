@@ -115,9 +115,10 @@ include tests/embedded/embedded.mk
 include port/lib.mk
 
 # C++: tests/test_cxx.cpp, the public headers and a scene header as C++11, linked
-# with the core compiled for that scene in this REAL (host port, CFLAGS).
+# with the core compiled for that scene in this REAL (host port, CFLAGS). CXXFLAGS
+# follows CFLAGS (the sanitizer build sets CFLAGS only).
 CXX ?= g++
-CXXFLAGS ?= -O2 -g
+CXXFLAGS ?= $(CFLAGS)
 CXX_WARNINGS := -std=c++11 -Wall -Wextra -Werror -pedantic -Wundef -Wshadow
 CXX_SCENE := fig6_1mode
 CXX_CORE := $(BUILD)/lib/host/libbeamslider-$(REAL)-$(CXX_SCENE).a
