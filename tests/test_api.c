@@ -112,6 +112,15 @@ static void test_every_status_has_a_text(void **state)
         assert_string_not_equal(bs_status_text((bs_status)s), "unknown status");
 }
 
+/* Field by field: the struct has padding, which memcmp would read. */
+static void assert_same_options(const bs_solver_options *a, const bs_solver_options *b)
+{
+    assert_int_equal(a->max_sweeps, b->max_sweeps);
+    assert_true(a->tol_rel == b->tol_rel);
+    assert_true(a->tol_abs == b->tol_abs);
+    assert_int_equal(a->measure_residual, b->measure_residual);
+}
+
 static void test_solver_options_are_checked_and_kept(void **state)
 {
     bs_solver_options options = bs_solver_defaults(), bad, got;
@@ -123,7 +132,7 @@ static void test_solver_options_are_checked_and_kept(void **state)
     load("configs/fig6.ini");
     assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
     assert_int_equal(bs_sim_get_solver(&sim, &got), BS_OK);
-    assert_memory_equal(&got, &options, sizeof got);
+    assert_same_options(&got, &options);
 
 #define EXPECT_REFUSED(change)                                                      \
     do {                                                                            \
@@ -131,7 +140,7 @@ static void test_solver_options_are_checked_and_kept(void **state)
         change;                                                                     \
         assert_int_equal(bs_sim_set_solver(&sim, &bad), BS_E_ARGUMENT);             \
         assert_int_equal(bs_sim_get_solver(&sim, &got), BS_OK);                     \
-        assert_memory_equal(&got, &options, sizeof got);                            \
+        assert_same_options(&got, &options);                            \
     } while (0)
     EXPECT_REFUSED(bad.max_sweeps = 0);
     EXPECT_REFUSED(bad.max_sweeps = BS_SOLVER_MAX_SWEEPS + 1);
@@ -144,7 +153,7 @@ static void test_solver_options_are_checked_and_kept(void **state)
     options.tol_rel = BS_R(1e-3);
     assert_int_equal(bs_sim_set_solver(&sim, &options), BS_OK);
     assert_int_equal(bs_sim_get_solver(&sim, &got), BS_OK);
-    assert_memory_equal(&got, &options, sizeof got);
+    assert_same_options(&got, &options);
 }
 
 /* With the residual off, every contact step does exactly max_sweeps sweeps
