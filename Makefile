@@ -4,11 +4,12 @@
 #   make run          build and run the fig6 scene (60 s), print its summary
 #   make test         build and run the tests, float and double (under two minutes)
 #   make test-long    the slow checks: valgrind, minute-long fuzzing, whole runs under QEMU
-#   make lib          the core as a static library: build/lib/libbeamslider-REAL.a
-#                     (with TARGET=cortex-m4f SCENE=fig6: for that target and scene)
-#   make install PREFIX=/usr/local   the library in both precisions, its headers,
-#                     pkg-config files (beamslider-double, beamslider-float) and the
-#                     CMake package beamslider
+#   make lib          the core as static libraries: build/lib/libbeamslider-double.a and
+#                     -float.a (with TARGET=cortex-m4f SCENE=fig6 REAL=float: for that
+#                     target and compiled scene, build/lib/cortex-m4f/; port/lib.mk)
+#   make install [PREFIX=/usr/local] [DESTDIR=]   the library in both precisions, its
+#                     headers, pkg-config files (beamslider-double, beamslider-float),
+#                     the CMake package beamslider and the licence (make uninstall)
 #   make fields       docs/fields.md: every scene field (also `beamslider fields`)
 #   make configs      regenerate the compile-time scene headers configs/*.h
 #   make test-sweeps  the contact solve's tests built with BS_WITH_SUBSPACE=0
@@ -68,13 +69,14 @@ HOST_LIB_OBJ := $(HOST_LIB_SRC:%.c=$(OBJ)/%.o)
 HOST_LIBS := -linih -lm
 
 TESTS := $(basename $(notdir $(wildcard tests/test_*.c)))
-TEST_BIN := $(TESTS:%=$(OBJ)/tests/%)
+# ... and the C++ one (tests/test_cxx.cpp, below)
+TEST_BIN := $(TESTS:%=$(OBJ)/tests/%) $(OBJ)/tests/test_cxx
 TEST_LIBS := -lcmocka -lcjson $(HOST_LIBS)
 
 BUILD_PACKAGES := gcc make libc6-dev libinih-dev
-TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev libcjson-dev binutils
+TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev libcjson-dev binutils g++ cmake pkg-config
 
-.PHONY: all run test test-long test-one embedded-long test-sweeps lib install configs fields accuracy-check clean deps-build deps-test .force
+.PHONY: all run test test-long test-one embedded-long test-sweeps lib install uninstall configs fields accuracy-check clean deps-build deps-test .force
 .SECONDARY:
 .DEFAULT_GOAL := all
 
@@ -117,6 +119,21 @@ TEST_EXTRA := test-sweeps accuracy-check
 TEST_LONG :=
 
 include tests/embedded/embedded.mk
+include port/lib.mk
+
+# C++: tests/test_cxx.cpp, the public headers and a scene header as C++11, linked
+# with the core compiled for that scene in this REAL (host port, CFLAGS). CXXFLAGS
+# follows CFLAGS (the sanitizer build sets CFLAGS only).
+CXX ?= g++
+CXXFLAGS ?= $(CFLAGS)
+CXX_WARNINGS := -std=c++11 -Wall -Wextra -Werror -pedantic -Wundef -Wshadow
+CXX_SCENE := fig6_1mode
+CXX_CORE := $(BUILD)/lib/host/libbeamslider-$(REAL)-$(CXX_SCENE).a
+$(call lib_archive,$(CXX_CORE),$(CC),$(CFLAGS) $(BASE_CFLAGS) $(NO_LOOP_CALLS) -Iport/host -I.,$(AR),$(REAL),\
+    'BS_SCENE_CONFIG="configs/$(CXX_SCENE).h"')
+$(OBJ)/tests/test_cxx: tests/test_cxx.cpp $(CXX_CORE) $(wildcard core/include/*.h) | deps-test
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) $(CXX_WARNINGS) -I$(CXX_CORE:.a=.obj)/include -Icore/include -I. -o $@ $< $(CXX_CORE) -lm
 
 ifeq ($(TARGET),host)
 run: all
@@ -143,6 +160,7 @@ test-sweeps:
 # Fragments of the other tools (reports, reference, robustness) add their own
 # targets and test targets (TEST_EXTRA, TEST_LONG, above).
 -include host/reports/reports.mk tests/reference/reference.mk tests/robustness.mk
+include tests/consumer/consumer.mk
 
 # Builds run two at a time (-j2, the prerequisites); the tests themselves in order.
 test: deps-test

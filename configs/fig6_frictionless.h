@@ -1,21 +1,14 @@
 /* Compile-time scene BS_SCENE_NAME (below), generated from BS_SCENE_SOURCE by
  * `beamslider gen`; do not edit: `make configs` regenerates it. Build the core
  * with a build configuration naming this file (BS_SCENE_CONFIG) and include it
- * again after beamslider.h to get `bs_compiled_scene` (docs/porting.md). */
+ * again after beamslider.h to get `bs_compiled_scene`; with a run-time-scene
+ * build (the installed library), include it once after beamslider.h
+ * (docs/porting.md). */
 
 #ifndef BS_SCENE_FIG6_FRICTIONLESS_CONFIG
 #define BS_SCENE_FIG6_FRICTIONLESS_CONFIG
 #define BS_SCENE_NAME "fig6_frictionless"
 #define BS_SCENE_DESCRIPTION "fig6 without friction (mu = 0)"
-#define BS_SCENE_MODES 5
-#define BS_MAX_MODES 5
-#define BS_WITH_FRICTION 0
-#define BS_WITH_RESTITUTION 1
-#define BS_WITH_GRAVITY 1
-#define BS_WITH_ROTATION 1
-#define BS_WITH_STRETCHING 1
-#define BS_WITH_PCS 0
-#define BS_WITH_IMPLICIT 0
 /* the run the scene file describes */
 #define BS_SCENE_MODEL BS_MODEL_FREE
 #define BS_SCENE_START BS_R(0.29999999999999999) /* s0 */
@@ -25,12 +18,24 @@
 #define BS_SCENE_SOLVER_TOL_REL BS_R(1.0000000000000001e-05)
 #define BS_SCENE_SOLVER_TOL_ABS BS_R(9.9999999999999995e-08)
 #define BS_SCENE_SOLVER_RESIDUAL 1
-#endif
-
+/* sizes and features of a build compiled against this scene (not when bs_scene
+ * is already defined: a run-time-scene build takes the data only) */
+#ifndef BS_SCENE_TYPE_DEFINED
+#define BS_SCENE_MODES 5
+#define BS_MAX_MODES 5
 #if BS_REAL_FLOAT
 #define BS_SHAPE_MAX_PIECES 32
 #else
 #define BS_SHAPE_MAX_PIECES 64
+#endif
+#define BS_WITH_FRICTION 0
+#define BS_WITH_RESTITUTION 1
+#define BS_WITH_GRAVITY 1
+#define BS_WITH_ROTATION 1
+#define BS_WITH_STRETCHING 1
+#define BS_WITH_PCS 0
+#define BS_WITH_IMPLICIT 0
+#endif
 #endif
 
 #if defined(BS_SCENE_TYPE_DEFINED) && !defined(BS_SCENE_FIG6_FRICTIONLESS_DATA)

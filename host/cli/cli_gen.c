@@ -1,17 +1,22 @@
 /* cli_gen.c - `beamslider gen SCENE.ini > configs/NAME.h`: a compile-time
  * scene for an embedded build.
  *
- * The header has two parts. The first, read by core/include/bs_config.h when
+ * The header has two parts. The first records the run and the solver
+ * settings the scene file describes and, read by core/include/bs_config.h when
  * the build configuration names it (BS_SCENE_CONFIG), fixes the sizes (mode
  * count, shape pieces) and switches off the features the scene does not need:
  *   friction     mu > 0            restitution  e_N > 0
  *   gravity      g > 0             rotation     [slider] rotation = free
  *   stretching   [numerics] stretching = on      pcs   [run] model = pcs
  *   implicit     [numerics] integrator = implicit
- * and records the run and the solver settings the scene file describes. The
- * second, seen once bs_scene is defined (include the header again after
- * beamslider.h), is the scene itself as `static const bs_scene
- * bs_compiled_scene` (const: it stays in flash), a positional initialiser
+ * The sizes and switches are left out when bs_scene is already defined: a
+ * program using a run-time-scene build of the core (the installed library)
+ * includes the header once, after beamslider.h, and takes the scene as data
+ * within that build's limits; defining them there would change its build tag
+ * (BS_E_BUILD) or redefine the limits. The second part, seen once bs_scene is
+ * defined (include the header again after beamslider.h), is the scene itself
+ * as `static const bs_scene bs_compiled_scene` (const: it stays in flash),
+ * a positional initialiser
  * printed field by field from the field table (core/include/bs_scene_fields.h),
  * which C99 and C++ compilers both accept. Values are printed in double with
  * 17 digits inside BS_R(), so that a float build rounds each once; the shape
@@ -148,7 +153,10 @@ static void append_initialiser(text *out, const scene_data *as_float, const scen
     BS_SCENE_FIELDS(PRINT_FIELD)
 }
 
-static void append_switches(text *t, const scene_params *p, const scene_model *model, const char *guard)
+/* The run and solver settings (always), then the sizes and switches of a
+ * build compiled against the scene (only ahead of bs_scene, see above). */
+static void append_switches(text *t, const scene_params *p, const scene_model *model,
+                            const shape_fit fits[2], const char *guard)
 {
     const scene_data *d = &model->data;
     append(t, "#ifndef %s_CONFIG\n#define %s_CONFIG\n", guard, guard);
@@ -156,15 +164,7 @@ static void append_switches(text *t, const scene_params *p, const scene_model *m
     append_string(t, p->name);
     append(t, "\n#define BS_SCENE_DESCRIPTION ");
     append_string(t, p->description);
-    append(t, "\n#define BS_SCENE_MODES %d\n#define BS_MAX_MODES %d\n", d->n_modes, d->n_modes);
-    append(t, "#define BS_WITH_FRICTION %d\n", d->mu > 0.0);
-    append(t, "#define BS_WITH_RESTITUTION %d\n", d->e_n > 0.0);
-    append(t, "#define BS_WITH_GRAVITY %d\n", d->gravity[0] != 0.0 || d->gravity[1] != 0.0);
-    append(t, "#define BS_WITH_ROTATION %d\n", d->inertia_inv > 0.0);
-    append(t, "#define BS_WITH_STRETCHING %d\n", model->stretch_norm > 0.0);
-    append(t, "#define BS_WITH_PCS %d\n", p->model == BS_MODEL_PCS);
-    append(t, "#define BS_WITH_IMPLICIT %d\n", d->implicit);
-    append(t, "/* the run the scene file describes */\n");
+    append(t, "\n/* the run the scene file describes */\n");
     append(t, "#define BS_SCENE_MODEL %s\n", p->model == BS_MODEL_PCS ? "BS_MODEL_PCS" : "BS_MODEL_FREE");
     append(t, "#define BS_SCENE_START ");
     append_real(t, p->s0);
@@ -176,7 +176,20 @@ static void append_switches(text *t, const scene_params *p, const scene_model *m
     append(t, "\n#define BS_SCENE_SOLVER_TOL_ABS ");
     append_real(t, p->solver_tol_abs);
     append(t, "\n#define BS_SCENE_SOLVER_RESIDUAL %d\n", p->solver_residual);
-    append(t, "#endif\n\n");
+    append(t, "/* sizes and features of a build compiled against this scene (not when bs_scene\n");
+    append(t, " * is already defined: a run-time-scene build takes the data only) */\n");
+    append(t, "#ifndef BS_SCENE_TYPE_DEFINED\n");
+    append(t, "#define BS_SCENE_MODES %d\n#define BS_MAX_MODES %d\n", d->n_modes, d->n_modes);
+    append(t, "#if BS_REAL_FLOAT\n#define BS_SHAPE_MAX_PIECES %d\n#else\n#define BS_SHAPE_MAX_PIECES %d\n#endif\n",
+           fits[1].pieces, fits[0].pieces);
+    append(t, "#define BS_WITH_FRICTION %d\n", d->mu > 0.0);
+    append(t, "#define BS_WITH_RESTITUTION %d\n", d->e_n > 0.0);
+    append(t, "#define BS_WITH_GRAVITY %d\n", d->gravity[0] != 0.0 || d->gravity[1] != 0.0);
+    append(t, "#define BS_WITH_ROTATION %d\n", d->inertia_inv > 0.0);
+    append(t, "#define BS_WITH_STRETCHING %d\n", model->stretch_norm > 0.0);
+    append(t, "#define BS_WITH_PCS %d\n", p->model == BS_MODEL_PCS);
+    append(t, "#define BS_WITH_IMPLICIT %d\n", d->implicit);
+    append(t, "#endif\n#endif\n\n");
 }
 
 int cli_gen(int argc, char **argv)
@@ -215,10 +228,10 @@ int cli_gen(int argc, char **argv)
     append(&out, "/* Compile-time scene BS_SCENE_NAME (below), generated from BS_SCENE_SOURCE by\n");
     append(&out, " * `beamslider gen`; do not edit: `make configs` regenerates it. Build the core\n");
     append(&out, " * with a build configuration naming this file (BS_SCENE_CONFIG) and include it\n");
-    append(&out, " * again after beamslider.h to get `bs_compiled_scene` (docs/porting.md). */\n\n");
-    append_switches(&out, &file.params, &model, guard);
-    append(&out, "#if BS_REAL_FLOAT\n#define BS_SHAPE_MAX_PIECES %d\n#else\n#define BS_SHAPE_MAX_PIECES %d\n#endif\n\n",
-           fits[1].pieces, fits[0].pieces);
+    append(&out, " * again after beamslider.h to get `bs_compiled_scene`; with a run-time-scene\n");
+    append(&out, " * build (the installed library), include it once after beamslider.h\n");
+    append(&out, " * (docs/porting.md). */\n\n");
+    append_switches(&out, &file.params, &model, fits, guard);
     append(&out, "#if defined(BS_SCENE_TYPE_DEFINED) && !defined(%s_DATA)\n#define %s_DATA\n", guard, guard);
     append(&out, "#define BS_SCENE_SOURCE ");
     append_string(&out, argv[0]);
