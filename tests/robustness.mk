@@ -10,7 +10,7 @@
 #                         AddressSanitizer + UndefinedBehaviorSanitizer
 #   make robustness-valgrind  the test programs and the CLI under valgrind
 #                         memcheck (test_sim: all but its two long runs)
-#   make fuzz-short       a smoke run: every fuzz target for FUZZ_TEST_SECONDS (5)
+#   make fuzz-short       a smoke run: every fuzz target for FUZZ_TEST_SECONDS (3)
 #                         each, FUZZ_JOBS (2) at a time
 #   make robustness-cli   regression checks of the CLI fixes, float and double
 #
@@ -21,7 +21,7 @@
 FUZZ_CC ?= clang
 ASAN_CC ?= gcc
 FUZZ_SECONDS ?= 60
-FUZZ_TEST_SECONDS ?= 5
+FUZZ_TEST_SECONDS ?= 3
 FUZZ_JOBS ?= 2
 FUZZ_BUILD := $(BUILD)/fuzz
 # fuzz_step_fig6_1mode, fuzz_step_fig6_frictionless: the core compiled against
