@@ -314,13 +314,20 @@ static void test_name_defaults_to_file_name_without_ini(void **state)
 
 /* ---- unknown, duplicate and overridden keys --------------------------- */
 
+/* refused at its section line: a section without keys would pass unseen */
 static void test_unknown_section_is_refused(void **state)
 {
+    char path[SCENE_PATH];
     char where[SCENE_PATH + 16];
     (void)state;
     assert_int_equal(load_field("beams", "length", "0.14"), -1);
-    place(where, sizeof where, field_path, FIELD_LINE);
-    assert_message_has(where, "unknown", "[beams] length");
+    place(where, sizeof where, field_path, FIELD_LINE - 1);
+    assert_message_has(where, "unknown section [beams]", "allowed: scene, beam, clamps");
+    write_file("emptysection.ini", "[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\n"
+                                   "acceleration = 14\n[run]\ns0 = 0.3\nt_end = 1\n[exitation]\n");
+    assert_int_equal(load_tmp("emptysection.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 9);
+    assert_message_has(where, "unknown section [exitation]");
 }
 
 static void test_unknown_key_is_refused(void **state)
@@ -340,7 +347,18 @@ static void test_key_outside_a_section_is_refused(void **state)
     write_file("nosection.ini", "dt = 1e-5\n[scene]\nbase = mssp2023.ini\n");
     assert_int_equal(load_tmp("nosection.ini", path, sizeof path), -1);
     place(where, sizeof where, path, 1);
-    assert_message_has(where, "unknown", "dt");
+    assert_message_has(where, "dt = 1e-5", "before any [section]");
+}
+
+static void test_key_without_a_name_is_refused(void **state)
+{
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    (void)state;
+    write_file("nokey.ini", "[scene]\nbase = mssp2023.ini\n[run]\n= 0.3\n");
+    assert_int_equal(load_tmp("nokey.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 4);
+    assert_message_has(where, "no key", "= 0.3");
 }
 
 static void test_key_set_twice_names_both_lines(void **state)
@@ -578,6 +596,102 @@ static void test_text_without_equals_is_a_syntax_error(void **state)
     assert_message_has(where, "syntax");
 }
 
+/* libinih ignores what follows the ] of a section line: a key written there
+ * would be lost and the base value would run. */
+static void test_text_after_a_section_line_is_refused(void **state)
+{
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    (void)state;
+    write_file("after.ini", "[scene]\nbase = mssp2023.ini\n"
+                            "[excitation] frequency = 200\n"  /* 3 */
+                            "acceleration = 14\n[run]\ns0 = 0.3\nt_end = 1\n");
+    assert_int_equal(load_tmp("after.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 3);
+    assert_message_has(where, "text after [excitation]", "frequency = 200");
+    write_file("afterx.ini", "[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\n"
+                             "acceleration = 14\n[run]x\ns0 = 0.3\nt_end = 1\n");
+    assert_int_equal(load_tmp("afterx.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 6);
+    assert_message_has(where, "text after [run]", "\"x\"");
+}
+
+/* a ; comment may follow, as after a value */
+static void test_comment_after_a_section_line_is_accepted(void **state)
+{
+    char path[SCENE_PATH];
+    (void)state;
+    write_file("sectioncomment.ini", "[scene]   ; what it is\nbase = mssp2023.ini\n[excitation];x\n"
+                                     "frequency = 124\nacceleration = 14\n[run]\t\ns0 = 0.3\nt_end = 1\n");
+    if (load_tmp("sectioncomment.ini", path, sizeof path) != 0) {
+        print_error("%s\n", message);
+        fail();
+    }
+}
+
+/* [ run ] would be a section named " run ", [] no section at all */
+static void test_section_name_must_be_a_plain_name(void **state)
+{
+    static const char *const bad[] = { "[ run ]", "[run ]", "[]", "[run.x]", "[r\xc3\xbcn]" };
+    char text[256];
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    size_t i;
+
+    (void)state;
+    for (i = 0; i < sizeof bad / sizeof bad[0]; ++i) {
+        snprintf(text, sizeof text, "[scene]\nbase = mssp2023.ini\n%s\ns0 = 0.3\n", bad[i]);
+        write_file("badsection.ini", text);
+        assert_int_equal(load_tmp("badsection.ini", path, sizeof path), -1);
+        place(where, sizeof where, path, 3);
+        assert_message_has(where, "section");
+    }
+}
+
+/* A file saved with classic Mac line ends is one line to a reader that
+ * splits at LF: libinih would read "[scene]" and drop the rest. */
+static void test_cr_only_line_ends_are_refused(void **state)
+{
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    (void)state;
+    write_file("mac.ini", "[scene]\rbase = mssp2023.ini\r[excitation]\rfrequency = 124\r"
+                          "acceleration = 14\r[run]\rs0 = 0.3\rt_end = 1\r");
+    assert_int_equal(load_tmp("mac.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 1);
+    assert_message_has(where, "carriage return without a line feed");
+    /* one stray CR inside a line */
+    write_file("straycr.ini", "[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\r200\n");
+    assert_int_equal(load_tmp("straycr.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 4);
+    assert_message_has(where, "carriage return");
+}
+
+static void test_crlf_line_ends_and_bom_are_accepted(void **state)
+{
+    char path[SCENE_PATH];
+    (void)state;
+    write_file("crlf.ini", "\xEF\xBB\xBF[scene]\r\nbase = mssp2023.ini\r\n[excitation]\r\nfrequency = 124\r\n"
+                           "acceleration = 14\r\n[run]\r\ns0 = 0.3\r\nt_end = 1\r\n");
+    if (load_tmp("crlf.ini", path, sizeof path) != 0) {
+        print_error("%s\n", message);
+        fail();
+    }
+    assert_close("frequency", read_scene.params.frequency, 124.0, 0.0, 0.0);
+    assert_close("t_end", read_scene.params.t_end, 1.0, 0.0, 0.0);
+}
+
+static void test_control_character_is_refused(void **state)
+{
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    (void)state;
+    write_file("control.ini", "[scene]\nbase = mssp2023.ini\nname = a\x1b[2Jb\n");
+    assert_int_equal(load_tmp("control.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 3);
+    assert_message_has(where, "control character 0x1b");
+}
+
 /* inih reads lines of at most ini_max_line - 3 characters; a longer one
  * must be refused, not cut into two lines. */
 static void test_over_long_line_is_refused_not_split(void **state)
@@ -758,6 +872,7 @@ int main(void)
         cmocka_unit_test(test_unknown_section_is_refused),
         cmocka_unit_test(test_unknown_key_is_refused),
         cmocka_unit_test(test_key_outside_a_section_is_refused),
+        cmocka_unit_test(test_key_without_a_name_is_refused),
         cmocka_unit_test(test_key_set_twice_names_both_lines),
         cmocka_unit_test(test_base_set_twice_names_both_lines),
         cmocka_unit_test(test_file_value_overrides_its_base),
@@ -773,6 +888,12 @@ int main(void)
         cmocka_unit_test(test_error_in_the_base_names_the_base),
         cmocka_unit_test(test_unclosed_section_is_a_syntax_error),
         cmocka_unit_test(test_text_without_equals_is_a_syntax_error),
+        cmocka_unit_test(test_text_after_a_section_line_is_refused),
+        cmocka_unit_test(test_comment_after_a_section_line_is_accepted),
+        cmocka_unit_test(test_section_name_must_be_a_plain_name),
+        cmocka_unit_test(test_cr_only_line_ends_are_refused),
+        cmocka_unit_test(test_crlf_line_ends_and_bom_are_accepted),
+        cmocka_unit_test(test_control_character_is_refused),
         cmocka_unit_test(test_over_long_line_is_refused_not_split),
         cmocka_unit_test(test_line_at_the_length_limit_is_accepted),
         cmocka_unit_test(test_dt_above_explicit_limit_is_refused),

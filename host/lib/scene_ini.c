@@ -1,26 +1,43 @@
 /* scene_ini.c - reading scene files with libinih, every field checked.
  *
  * libinih (Debian's libinih-dev) does the INI syntax. Its handler gets no line
- * number in the Debian build, so the file is fed through a reader that counts
- * lines (and refuses over-long lines instead of letting them be split, and NUL
- * bytes, which would cut a line short unseen). The first error wins and names
- * file, line, field, value and the allowed range.
+ * number in the Debian build, and it never sees section lines, so the file is
+ * fed through a reader that counts lines and refuses, line by line, what
+ * libinih would take silently or misread:
+ *   - an over-long line (libinih would split it) and a NUL byte (it would cut
+ *     the line short);
+ *   - a carriage return not followed by a line feed (classic Mac line ends:
+ *     the whole file would be one line) and other control characters (a text
+ *     file has none; a tab is a space);
+ *   - a section line that is not exactly [name] with a known name, followed
+ *     at most by a ; comment: text after the ] would be ignored;
+ *   - a file larger than SCENE_MAX_BYTES.
+ * Only regular files are read (a FIFO or /dev/zero would never end). The
+ * first error wins and names file, line, field, value and the allowed range.
  */
+#define _POSIX_C_SOURCE 200809L /* open, fstat, fcntl, fdopen */
+
 #include "scene_ini.h"
 
+#include <ctype.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <ini.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 typedef struct reader {
     FILE *file;
     int line;
-    int bad_line;     /* line number of the first over-long line or NUL byte, 0 if none */
-    int bad_is_nul;   /* 1: bad_line holds a NUL byte; 0: it is over-long */
-    int read_errno;   /* errno of a failed read (e.g. the path is a folder), 0 if none */
+    long bytes;          /* read so far */
+    int too_big;         /* 1: stopped after SCENE_MAX_BYTES */
+    int bad_line;        /* the first line the reader refuses, 0 if none */
+    char bad_why[320];   /* what is wrong with it */
+    int read_errno;      /* errno of a failed read, 0 if none */
 } reader;
 
 typedef struct parse {
@@ -35,8 +52,114 @@ typedef struct parse {
     int failed;
 } parse;
 
-/* fgets for libinih, by characters: fgets cannot tell a NUL byte (a binary
- * or UTF-16 file) from the end of the line. */
+/* Records the first line the reader refuses (libinih still gets it, but
+ * on_entry takes nothing from that line on). */
+static void refuse_line(reader *in, int line, const char *why)
+{
+    if (in->bad_line)
+        return;
+    in->bad_line = line;
+    snprintf(in->bad_why, sizeof in->bad_why, "%s", why);
+}
+
+/* The byte c of the line being read: a NUL byte, a carriage return without
+ * a line feed, or another control character makes the line bad. */
+static void check_byte(reader *in, int c)
+{
+    char why[96];
+    const int line = in->line + 1;
+
+    if (c == '\0') {
+        refuse_line(in, line, "NUL byte: not a text file (UTF-16? save it as UTF-8)");
+    } else if (c == '\r') {
+        const int next = getc(in->file);
+        if (next != EOF)
+            ungetc(next, in->file);
+        if (next != '\n')
+            refuse_line(in, line, "carriage return without a line feed (classic Mac line ends? "
+                                  "save the file with LF or CRLF line ends)");
+    } else if ((c < 0x20 && c != '\t' && c != '\n') || c == 0x7f) {
+        snprintf(why, sizeof why, "control character 0x%02x: not a text file", (unsigned)c);
+        refuse_line(in, line, why);
+    }
+}
+
+static int is_section_name_char(char c)
+{
+    return isalnum((unsigned char)c) || c == '_';
+}
+
+/* 1 if [section] is a section of the field table. */
+static int section_known(const char *name, size_t length)
+{
+    int i;
+    for (i = 0; scene_fields[i].key; ++i)
+        if (strlen(scene_fields[i].section) == length && !strncmp(scene_fields[i].section, name, length))
+            return 1;
+    return 0;
+}
+
+/* "scene, beam, ...": every section of the field table once, in its order. */
+static void section_list(char *out, size_t size)
+{
+    size_t used = 0;
+    int i, j;
+
+    out[0] = '\0';
+    for (i = 0; scene_fields[i].key && used < size; ++i) {
+        for (j = 0; j < i && strcmp(scene_fields[j].section, scene_fields[i].section); ++j)
+            ;
+        if (j == i)
+            used += (size_t)snprintf(out + used, size - used, "%s%s", used ? ", " : "", scene_fields[i].section);
+    }
+}
+
+/* A line that opens with [ must be [name] with a known name, then nothing
+ * but spaces and a ; comment: libinih ignores whatever follows the ] (a key
+ * written there would be lost), keeps spaces inside the brackets in the name
+ * and takes an empty name as "no section". A line without ] is left to
+ * libinih's syntax error. */
+static void check_section_line(reader *in, const char *text)
+{
+    const char *open = text;
+    const char *close;
+    const char *after;
+    char why[300];
+    char known[160];
+    size_t length;
+
+    if (in->line == 1 && !strncmp(open, "\xEF\xBB\xBF", 3)) /* UTF-8 byte-order mark */
+        open += 3;
+    while (*open == ' ' || *open == '\t')
+        ++open;
+    if (*open != '[' || !(close = strchr(open, ']')))
+        return;
+    length = (size_t)(close - open - 1);
+    for (after = close + 1; *after == ' ' || *after == '\t' || *after == '\r' || *after == '\n'; ++after)
+        ;
+    if (length == 0) {
+        refuse_line(in, in->line, "empty section name []");
+    } else if (strspn(open + 1, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != length) {
+        size_t i;
+        for (i = 0; i < length && is_section_name_char(open[1 + i]); ++i)
+            ;
+        snprintf(why, sizeof why, "section name [%.*s] holds %s; allowed: letters, digits and _, as in [numerics]",
+                 (int)length, open + 1, isspace((unsigned char)open[1 + i]) ? "a space" : "a character other than letters, digits and _");
+        refuse_line(in, in->line, why);
+    } else if (!section_known(open + 1, length)) {
+        section_list(known, sizeof known);
+        snprintf(why, sizeof why, "unknown section [%.*s]; allowed: %s", (int)length, open + 1, known);
+        refuse_line(in, in->line, why);
+    } else if (*after != '\0' && *after != ';') {
+        length = strcspn(after, "\r\n");
+        snprintf(why, sizeof why, "text after [%.*s]: \"%.*s\" (a section line holds only [name] and a ; comment; "
+                 "put each key = value on its own line)", (int)(close - open - 1), open + 1, (int)length, after);
+        refuse_line(in, in->line, why);
+    }
+}
+
+/* fgets for libinih, by characters (fgets cannot tell a NUL byte from the end
+ * of the line), checking each byte and each complete line. */
 static char *read_line(char *str, int num, void *stream)
 {
     reader *in = (reader *)stream;
@@ -45,10 +168,7 @@ static char *read_line(char *str, int num, void *stream)
 
     errno = 0;
     while (length < num - 1 && (c = getc(in->file)) != EOF) {
-        if (c == '\0' && !in->bad_line) {
-            in->bad_line = in->line + 1;
-            in->bad_is_nul = 1;
-        }
+        check_byte(in, c);
         str[length++] = (char)c;
         if (c == '\n')
             break;
@@ -59,13 +179,17 @@ static char *read_line(char *str, int num, void *stream)
         return NULL;
     str[length] = '\0';
     ++in->line;
-    if (str[length - 1] != '\n' && length == num - 1 && !in->bad_line) {
+    if (str[length - 1] != '\n' && length == num - 1) {
         c = getc(in->file); /* full buffer: over-long unless the file ends here */
         if (c != EOF) {
+            char why[64];
             ungetc(c, in->file);
-            in->bad_line = in->line;
+            snprintf(why, sizeof why, "line longer than %d characters", ini_max_line - 3);
+            refuse_line(in, in->line, why);
+            return str;
         }
     }
+    check_section_line(in, str);
     return str;
 }
 
@@ -169,6 +293,23 @@ static int set_field(scene_file *scene, int file, int line, const char *section,
     return 0;
 }
 
+/* A key before the first section line, or a line "= value" without a key:
+ * 0, or -1 with the error. */
+static int check_entry_shape(parse *p, const char *section, const char *key, const char *value)
+{
+    const char *path = p->scene->files[p->file];
+
+    if (!*key)
+        snprintf(p->err, p->err_size, "%s:%d: no key before the = of \"= %s\" (expected key = value)", path,
+                 p->in->line, value);
+    else if (!*section)
+        snprintf(p->err, p->err_size, "%s:%d: %s = %s comes before any [section] line (each key belongs "
+                 "to a section, such as [numerics] dt)", path, p->in->line, key, value);
+    else
+        return 0;
+    return -1;
+}
+
 static int on_entry(void *user, const char *section, const char *key, const char *value)
 {
     parse *p = (parse *)user;
@@ -197,7 +338,8 @@ static int on_entry(void *user, const char *section, const char *key, const char
     }
     if (is_base)
         return 1;
-    if (set_field(p->scene, p->file, p->in->line, section, key, value, p->err, p->err_size) != 0) {
+    if (check_entry_shape(p, section, key, value) != 0
+        || set_field(p->scene, p->file, p->in->line, section, key, value, p->err, p->err_size) != 0) {
         p->failed = 1;
         return 0;
     }
@@ -211,11 +353,8 @@ static int run_parser(parse *p)
     reader in;
     int result;
 
+    memset(&in, 0, sizeof in);
     in.file = fopen(path, "r");
-    in.line = 0;
-    in.bad_line = 0;
-    in.bad_is_nul = 0;
-    in.read_errno = 0;
     if (!in.file) {
         snprintf(p->err, p->err_size, "%s: cannot open scene file", path);
         return -1;
@@ -228,12 +367,7 @@ static int run_parser(parse *p)
         return -1;
     }
     if (in.bad_line && !p->failed && !(result > 0 && result < in.bad_line)) {
-        if (in.bad_is_nul)
-            snprintf(p->err, p->err_size, "%s:%d: NUL byte: not a text file (UTF-16? save it as UTF-8)",
-                     path, in.bad_line);
-        else
-            snprintf(p->err, p->err_size, "%s:%d: line longer than %d characters", path, in.bad_line,
-                     ini_max_line - 3);
+        snprintf(p->err, p->err_size, "%s:%d: %s", path, in.bad_line, in.bad_why);
         return -1;
     }
     if (p->failed)
