@@ -15,6 +15,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 /* static: large */
@@ -572,6 +573,76 @@ static void test_error_in_the_base_names_the_base(void **state)
     assert_message_has(where, "[beam] length");
 }
 
+/* ---- what is read: regular files, at most SCENE_MAX_BYTES ------------- */
+
+/* /dev/zero never ends and a FIFO waits for a writer: both used to hang */
+static void test_base_that_is_not_a_regular_file_is_refused(void **state)
+{
+    char path[SCENE_PATH];
+    char fifo[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+
+    (void)state;
+    alarm(60); /* a hang ends the program (SIGALRM) instead of the test run */
+    write_file("zero.ini", "[scene]\nbase = /dev/zero\n");
+    assert_int_equal(load_tmp("zero.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 2);
+    assert_message_has(where, "/dev/zero", "a character device, not a regular file");
+
+    tmp_path(fifo, sizeof fifo, "fifo.ini");
+    assert_int_equal(mkfifo(fifo, 0600), 0);
+    write_file("onfifo.ini", "[scene]\nbase = fifo.ini\n");
+    assert_int_equal(load_tmp("onfifo.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 2);
+    assert_message_has(where, fifo, "FIFO", "not a regular file");
+    assert_int_equal(load_tmp("fifo.ini", path, sizeof path), -1);
+    assert_message_has(fifo, "cannot read scene file", "not a regular file");
+    alarm(0);
+}
+
+static void test_folder_as_scene_is_refused(void **state)
+{
+    (void)state;
+    message[0] = '\0';
+    assert_int_equal(scene_load(tmp_dir, &read_scene, message, sizeof message), -1);
+    assert_message_has(tmp_dir, "cannot read scene file", "a folder, not a regular file");
+}
+
+/* A valid scene padded with comment lines to size bytes, as big.ini. */
+static void write_padded_scene(long size)
+{
+    static const char head[] = "[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\n"
+                               "acceleration = 14\n[run]\ns0 = 0.3\nt_end = 1\n";
+    char path[SCENE_PATH];
+    long used = (long)sizeof head - 1;
+    FILE *out;
+
+    tmp_path(path, sizeof path, "big.ini");
+    out = fopen(path, "w");
+    assert_non_null(out);
+    assert_true(fputs(head, out) >= 0);
+    for (; used + 100 <= size; used += 100)
+        assert_true(fprintf(out, ";%98s\n", "padding") == 100);
+    for (; used < size; ++used)
+        assert_true(fputc('\n', out) == '\n');
+    assert_int_equal(fclose(out), 0);
+}
+
+static void test_scene_file_over_the_size_limit_is_refused(void **state)
+{
+    char path[SCENE_PATH];
+
+    (void)state;
+    write_padded_scene(SCENE_MAX_BYTES);
+    if (load_tmp("big.ini", path, sizeof path) != 0) {
+        print_error("a scene of exactly SCENE_MAX_BYTES: %s\n", message);
+        fail();
+    }
+    write_padded_scene(SCENE_MAX_BYTES + 1);
+    assert_int_equal(load_tmp("big.ini", path, sizeof path), -1);
+    assert_message_has(path, "1048577 bytes", "more than a scene file may have (1048576, 1 MiB)");
+}
+
 /* ---- syntax ----------------------------------------------------------- */
 
 static void test_unclosed_section_is_a_syntax_error(void **state)
@@ -886,6 +957,9 @@ int main(void)
         cmocka_unit_test(test_file_that_does_not_exist_is_named),
         cmocka_unit_test(test_base_cycle_is_refused),
         cmocka_unit_test(test_error_in_the_base_names_the_base),
+        cmocka_unit_test(test_base_that_is_not_a_regular_file_is_refused),
+        cmocka_unit_test(test_folder_as_scene_is_refused),
+        cmocka_unit_test(test_scene_file_over_the_size_limit_is_refused),
         cmocka_unit_test(test_unclosed_section_is_a_syntax_error),
         cmocka_unit_test(test_text_without_equals_is_a_syntax_error),
         cmocka_unit_test(test_text_after_a_section_line_is_refused),

@@ -168,6 +168,10 @@ static char *read_line(char *str, int num, void *stream)
 
     errno = 0;
     while (length < num - 1 && (c = getc(in->file)) != EOF) {
+        if (++in->bytes > SCENE_MAX_BYTES) { /* a file that grows, or says it is empty (/proc) */
+            in->too_big = 1;
+            return NULL; /* the end of the file, for libinih */
+        }
         check_byte(in, c);
         str[length++] = (char)c;
         if (c == '\n')
@@ -346,17 +350,64 @@ static int on_entry(void *user, const char *section, const char *key, const char
     return 1;
 }
 
+static const char *file_kind(mode_t mode)
+{
+    if (S_ISDIR(mode))
+        return "a folder";
+    if (S_ISFIFO(mode))
+        return "a FIFO (named pipe)";
+    if (S_ISCHR(mode))
+        return "a character device";
+    if (S_ISBLK(mode))
+        return "a block device";
+    if (S_ISSOCK(mode))
+        return "a socket";
+    return "not a regular file";
+}
+
+/* Opens a scene or base file for reading: a regular file of at most
+ * SCENE_MAX_BYTES. Opened without blocking, so that a FIFO without a writer
+ * is refused instead of waited for. 0, or -1 with what failed ("open",
+ * "read") in verb and why in why. */
+static int open_scene_file(const char *path, FILE **file, const char **verb, char *why, size_t size)
+{
+    struct stat info;
+    const int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY);
+
+    *file = NULL;
+    *verb = "open";
+    if (fd < 0) {
+        snprintf(why, size, "%s", strerror(errno));
+        return -1;
+    }
+    *verb = "read";
+    if (fstat(fd, &info) != 0)
+        snprintf(why, size, "%s", strerror(errno));
+    else if (!S_ISREG(info.st_mode))
+        snprintf(why, size, "%s, not a regular file", file_kind(info.st_mode));
+    else if (info.st_size > SCENE_MAX_BYTES)
+        snprintf(why, size, "%lld bytes, more than a scene file may have (%ld, 1 MiB)",
+                 (long long)info.st_size, SCENE_MAX_BYTES);
+    else if (fcntl(fd, F_SETFL, 0) != 0 || !(*file = fdopen(fd, "r")))
+        snprintf(why, size, "%s", strerror(errno));
+    else
+        return 0;
+    close(fd);
+    return -1;
+}
+
 /* One pass of libinih over the file; 0 or -1 with err filled. */
 static int run_parser(parse *p)
 {
     const char *path = p->scene->files[p->file];
+    const char *verb;
+    char why[160];
     reader in;
     int result;
 
     memset(&in, 0, sizeof in);
-    in.file = fopen(path, "r");
-    if (!in.file) {
-        snprintf(p->err, p->err_size, "%s: cannot open scene file", path);
+    if (open_scene_file(path, &in.file, &verb, why, sizeof why) != 0) {
+        snprintf(p->err, p->err_size, "%s: cannot %s scene file: %s", path, verb, why);
         return -1;
     }
     p->in = &in;
@@ -364,6 +415,11 @@ static int run_parser(parse *p)
     fclose(in.file);
     if (in.read_errno) {
         snprintf(p->err, p->err_size, "%s: cannot read scene file: %s", path, strerror(in.read_errno));
+        return -1;
+    }
+    if (in.too_big) {
+        snprintf(p->err, p->err_size, "%s: cannot read scene file: more than a scene file may have "
+                 "(%ld bytes, 1 MiB)", path, SCENE_MAX_BYTES);
         return -1;
     }
     if (in.bad_line && !p->failed && !(result > 0 && result < in.bad_line)) {
@@ -418,6 +474,8 @@ static int load_file(scene_file *scene, const char *path, char *err, size_t err_
         return -1;
     if (p.base[0]) {
         char base_path[SCENE_PATH];
+        const char *verb;
+        char why[160];
         FILE *probe;
         const char *slash = strrchr(path, '/');
         const int folder = slash && p.base[0] != '/' ? (int)(slash - path + 1) : 0;
@@ -425,10 +483,9 @@ static int load_file(scene_file *scene, const char *path, char *err, size_t err_
             snprintf(err, err_size, "%s: [scene] base: path too long", path);
             return -1;
         }
-        probe = fopen(base_path, "r"); /* name the line that asked for it */
-        if (!probe) {
-            snprintf(err, err_size, "%s:%d: [scene] base = %s: cannot open %s", path, p.base_line, p.base,
-                     base_path);
+        if (open_scene_file(base_path, &probe, &verb, why, sizeof why) != 0) { /* name the line that asked for it */
+            snprintf(err, err_size, "%s:%d: [scene] base = %s: cannot %s %s: %s", path, p.base_line, p.base,
+                     verb, base_path, why);
             return -1;
         }
         fclose(probe);

@@ -8,6 +8,10 @@
 #define SCENE_PATH 512
 #define SCENE_MAX_FILES 8
 #define SCENE_MAX_FIELDS 40
+/* A scene file (and each base) is a regular file of at most this many bytes
+ * (1 MiB; the shipped ones are under 2 KiB): a FIFO, a device or a huge file
+ * would otherwise be read for ever. */
+#define SCENE_MAX_BYTES (1L << 20)
 
 /* A scene as read: the parameters and where each one was set. */
 typedef struct scene_file {

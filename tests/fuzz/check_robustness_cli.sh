@@ -13,12 +13,13 @@ trap 'rm -rf "$tmp"' EXIT
 # expect DESCRIPTION STATUS TEXT ARGS...: exit status STATUS and TEXT on
 # stderr (an empty TEXT: anything); standard output goes to $stdout
 stdout=$tmp/out
+limit=  # a command prefix, such as timeout 20
 expect() {
     description=$1
     want=$2
     text=$3
     shift 3
-    "$bin" "$@" >"$stdout" 2>"$tmp/err"
+    $limit "$bin" "$@" >"$stdout" 2>"$tmp/err"
     status=$?
     if [ "$status" -eq "$want" ] && { [ -z "$text" ] || grep -q -F -e "$text" "$tmp/err"; }; then
         passed=$((passed + 1))
@@ -81,5 +82,15 @@ printf "$good" | tr '\n' '\r' >"$tmp/mac.ini"
 expect "CR-only line ends are refused" 2 "mac.ini:1: carriage return without a line feed" run "$tmp/mac.ini"
 printf "$good" | sed 's/$/\r/' >"$tmp/crlf.ini"
 expect "CRLF line ends run" 0 "" run "$tmp/crlf.ini"
+# a base that never ends, a FIFO: refused at once (they used to hang; the
+# timeout turns a hang into a failure where timeout exists)
+if command -v timeout >/dev/null 2>&1; then limit="timeout 20"; fi
+printf '[scene]\nbase = /dev/zero\n' >"$tmp/zero.ini"
+expect "base = /dev/zero is refused" 2 "zero.ini:2: [scene] base = /dev/zero: cannot read /dev/zero: a character device" \
+    run "$tmp/zero.ini"
+if mkfifo "$tmp/fifo.ini" 2>/dev/null; then
+    expect "a FIFO as the scene is refused" 2 "fifo.ini: cannot read scene file: a FIFO" run "$tmp/fifo.ini"
+fi
+limit=
 echo "check_robustness_cli: $passed passed, $failed failed ($bin)"
 [ "$failed" -eq 0 ]
