@@ -891,12 +891,61 @@ static void test_override_applies_a_valid_value(void **state)
     assert_close("dt", read_scene.params.dt, 1e-5, 0.0, 1e-15);
     assert_string_equal(scene_where(&read_scene, "numerics", "dt", where, sizeof where), "--dt");
     files = read_scene.file_count;
-    /* the same option again replaces the value and reuses its entry */
+    /* the same option again replaces the value */
     assert_int_equal(scene_set(&read_scene, "numerics", "dt", "1.5e-5", "--dt", message, sizeof message), 0);
     assert_close("dt", read_scene.params.dt, 1.5e-5, 0.0, 1e-15);
     assert_int_equal(read_scene.file_count, files);
     support_build(&read_scene, &core_scene, &scene_derived);
     assert_close("core dt", core_scene.dt, 1.5e-5, 0.0, 2.0 * SUPPORT_EPS);
+}
+
+/* Options used to be recorded as extra "files": a long enough command line
+ * (or one option spelt several ways) failed with "too many nested base
+ * files". Options and the base chain now have separate limits. */
+static void test_options_leave_the_base_file_slots_alone(void **state)
+{
+    static const char *const spellings[] = { "--dt", "--time-step", "-dt", "--DT", "--dt=", "--step",
+                                              "--h", "--delta-t", "--dt2", "--dt3", "--dt4", "--dt5" };
+    char name[32];
+    char text[160];
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    int i;
+
+    (void)state;
+    /* a chain of SCENE_MAX_FILES files: chain1.ini .. chainN.ini, the last on mssp2023.ini */
+    for (i = 1; i < SCENE_MAX_FILES; ++i) {
+        snprintf(name, sizeof name, "chain%d.ini", i);
+        if (i + 1 < SCENE_MAX_FILES)
+            snprintf(text, sizeof text, "[scene]\nbase = chain%d.ini\n", i + 1);
+        else
+            snprintf(text, sizeof text, "[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\n"
+                                        "acceleration = 14\n[run]\ns0 = 0.3\nt_end = 1\n");
+        write_file(name, text);
+    }
+    if (load_tmp("chain1.ini", path, sizeof path) != 0) {
+        print_error("%s\n", message);
+        fail();
+    }
+    assert_int_equal(read_scene.file_count, SCENE_MAX_FILES);
+    for (i = 0; i < (int)(sizeof spellings / sizeof spellings[0]); ++i) {
+        snprintf(text, sizeof text, "%d.5e-5", 1 + i % 3);
+        if (scene_set(&read_scene, "numerics", "dt", text, spellings[i], message, sizeof message) != 0) {
+            print_error("option %d (%s): %s\n", i + 1, spellings[i], message);
+            fail();
+        }
+        assert_string_equal(scene_where(&read_scene, "numerics", "dt", where, sizeof where), spellings[i]);
+    }
+    assert_int_equal(scene_set(&read_scene, "run", "t_end", "0.5", "--t-end", message, sizeof message), 0);
+    assert_int_equal(read_scene.file_count, SCENE_MAX_FILES);
+    /* the files keep their places in messages */
+    tmp_path(path, sizeof path, "mssp2023.ini");
+    assert_non_null(strstr(scene_where(&read_scene, "beam", "length", where, sizeof where), path));
+    support_build(&read_scene, &core_scene, &scene_derived);
+    /* the chain limit itself is unchanged: one file more is refused */
+    write_file("chain0.ini", "[scene]\nbase = chain1.ini\n");
+    assert_int_equal(load_tmp("chain0.ini", path, sizeof path), -1);
+    assert_message_has("too many nested base files");
 }
 
 static void test_override_refuses_a_bad_value_naming_the_option(void **state)
@@ -976,6 +1025,7 @@ int main(void)
         cmocka_unit_test(test_pcs_start_inside_a_clamp_builds),
         cmocka_unit_test(test_slot_as_wide_as_the_beam_is_refused),
         cmocka_unit_test(test_override_applies_a_valid_value),
+        cmocka_unit_test(test_options_leave_the_base_file_slots_alone),
         cmocka_unit_test(test_override_refuses_a_bad_value_naming_the_option),
         cmocka_unit_test(test_override_beyond_explicit_limit_names_the_option),
     };

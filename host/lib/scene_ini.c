@@ -269,31 +269,37 @@ static int assign(scene_params *params, const field_spec *f, const char *value, 
     return 0;
 }
 
-static int set_field(scene_file *scene, int file, int line, const char *section, const char *key,
-                     const char *value, char *err, size_t err_size)
+/* Sets field [section] key from file (an index into files, line > 0) or
+ * from an option (file = SCENE_BY_OPTION, origin: its name, line 0). */
+static int set_field(scene_file *scene, int file, const char *origin, int line, const char *section,
+                     const char *key, const char *value, char *err, size_t err_size)
 {
     const int i = field_index(section, key);
     char why[192];
 
     if (i < 0) {
-        snprintf(err, err_size, "%s:%d: unknown field [%s] %s", scene->files[file], line, section, key);
+        if (file >= 0)
+            snprintf(err, err_size, "%s:%d: unknown field [%s] %s", origin, line, section, key);
+        else
+            snprintf(err, err_size, "%s: unknown field [%s] %s", origin, section, key);
         return -1;
     }
-    if (scene->set_file[i] == file && line > 0) {
-        snprintf(err, err_size, "%s:%d: [%s] %s set twice (first at line %d)", scene->files[file], line,
-                 section, key, scene->set_line[i]);
+    if (file >= 0 && scene->set_file[i] == file) {
+        snprintf(err, err_size, "%s:%d: [%s] %s set twice (first at line %d)", origin, line, section, key,
+                 scene->set_line[i]);
         return -1;
     }
     if (assign(&scene->params, &scene_fields[i], value, why, sizeof why) != 0) {
-        if (line > 0)
-            snprintf(err, err_size, "%s:%d: [%s] %s = %s: %s", scene->files[file], line, section, key,
-                     value, why);
+        if (file >= 0)
+            snprintf(err, err_size, "%s:%d: [%s] %s = %s: %s", origin, line, section, key, value, why);
         else
-            snprintf(err, err_size, "%s %s: %s", scene->files[file], value, why);
+            snprintf(err, err_size, "%s %s: %s", origin, value, why);
         return -1;
     }
     scene->set_file[i] = file;
     scene->set_line[i] = line;
+    if (file == SCENE_BY_OPTION)
+        strcpy(scene->set_option[i], origin); /* scene_set checked its length */
     return 0;
 }
 
@@ -343,7 +349,8 @@ static int on_entry(void *user, const char *section, const char *key, const char
     if (is_base)
         return 1;
     if (check_entry_shape(p, section, key, value) != 0
-        || set_field(p->scene, p->file, p->in->line, section, key, value, p->err, p->err_size) != 0) {
+        || set_field(p->scene, p->file, p->scene->files[p->file], p->in->line, section, key, value, p->err,
+                     p->err_size) != 0) {
         p->failed = 1;
         return 0;
     }
@@ -436,14 +443,10 @@ static int run_parser(parse *p)
     return 0;
 }
 
-/* reuse: an option given twice reuses its entry; a base file never does, so
- * a cycle of bases runs into SCENE_MAX_FILES instead of recursing forever. */
-static int add_file(scene_file *scene, const char *path, int reuse, char *err, size_t err_size)
+/* A base file is never reused, so a cycle of bases runs into
+ * SCENE_MAX_FILES instead of recursing for ever. */
+static int add_file(scene_file *scene, const char *path, char *err, size_t err_size)
 {
-    int i;
-    for (i = 1; reuse && i < scene->file_count; ++i)
-        if (!strcmp(scene->files[i], path))
-            return i;
     if (scene->file_count >= SCENE_MAX_FILES) {
         snprintf(err, err_size, "%s: too many nested base files (at most %d; a cycle of bases?)", path,
                  SCENE_MAX_FILES);
@@ -460,7 +463,7 @@ static int add_file(scene_file *scene, const char *path, int reuse, char *err, s
 static int load_file(scene_file *scene, const char *path, char *err, size_t err_size)
 {
     parse p;
-    const int file = add_file(scene, path, 0, err, err_size);
+    const int file = add_file(scene, path, err, err_size);
 
     if (file < 0)
         return -1;
@@ -515,7 +518,7 @@ int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
 
     memset(scene, 0, sizeof *scene);
     for (i = 0; i < SCENE_MAX_FIELDS; ++i)
-        scene->set_file[i] = -1;
+        scene->set_file[i] = SCENE_NOT_SET;
     ini_allow_multiline = 0; /* an indented line is an error, not a silent continuation */
     default_name(scene, path);
     for (i = 0; scene_fields[i].key; ++i) { /* optional fields start at their defaults */
@@ -531,7 +534,7 @@ int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
     for (i = 0; scene_fields[i].key; ++i) {
         const field_spec *f = &scene_fields[i];
         char range[96];
-        if (scene->set_file[i] >= 0 || f->default_text)
+        if (scene->set_file[i] != SCENE_NOT_SET || f->default_text)
             continue;
         field_range_text(f, range, sizeof range);
         snprintf(err, err_size, "%s: missing field [%s] %s (%s; allowed: %s)%s", path, f->section, f->key,
@@ -544,21 +547,23 @@ int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
 int scene_set(scene_file *scene, const char *section, const char *key, const char *value,
               const char *origin, char *err, size_t err_size)
 {
-    const int file = add_file(scene, origin, 1, err, err_size);
-    if (file < 0)
+    if (strlen(origin) >= SCENE_OPTION) {
+        snprintf(err, err_size, "%.*s...: option name too long (at most %d characters)", SCENE_OPTION,
+                 origin, SCENE_OPTION - 1);
         return -1;
-    return set_field(scene, file, 0, section, key, value, err, err_size);
+    }
+    return set_field(scene, SCENE_BY_OPTION, origin, 0, section, key, value, err, err_size);
 }
 
 const char *scene_where(const scene_file *scene, const char *section, const char *key,
                         char *out, size_t size)
 {
     const int i = field_index(section, key);
-    if (i < 0 || scene->set_file[i] < 0)
+    if (i < 0 || scene->set_file[i] == SCENE_NOT_SET)
         snprintf(out, size, "(default)");
-    else if (scene->set_line[i] > 0)
-        snprintf(out, size, "%s:%d", scene->files[scene->set_file[i]], scene->set_line[i]);
+    else if (scene->set_file[i] == SCENE_BY_OPTION)
+        snprintf(out, size, "%s", scene->set_option[i]);
     else
-        snprintf(out, size, "%s", scene->files[scene->set_file[i]]);
+        snprintf(out, size, "%s:%d", scene->files[scene->set_file[i]], scene->set_line[i]);
     return out;
 }

@@ -92,5 +92,11 @@ if mkfifo "$tmp/fifo.ini" 2>/dev/null; then
     expect "a FIFO as the scene is refused" 2 "fifo.ini: cannot read scene file: a FIFO" run "$tmp/fifo.ini"
 fi
 limit=
+# options used to take the slots of base files (8 in all): a chain of 7
+# files and five options failed with "too many nested base files"
+for i in 1 2 3 4 5; do printf '[scene]\nbase = chain%d.ini\n' $((i + 1)) >"$tmp/chain$i.ini"; done
+printf '[scene]\nbase = good.ini\n' >"$tmp/chain6.ini"
+expect "a chain of 7 files and five options runs" 0 "" run "$tmp/chain1.ini" --dt 2e-5 --t-end 0.001 \
+    --s0 0.3 --model free --pgs-iters 2 --dt 1e-5
 echo "check_robustness_cli: $passed passed, $failed failed ($bin)"
 [ "$failed" -eq 0 ]
