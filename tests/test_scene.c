@@ -11,7 +11,9 @@
 
 #include "support.h"
 
+#include <ctype.h>
 #include <dirent.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -821,6 +823,7 @@ static void test_dt_above_explicit_limit_is_refused(void **state)
 {
     char where[SCENE_PATH + 16];
     char allowed[64];
+    char limit[40];
 
     (void)state;
     assert_int_equal(load_field("numerics", "dt", "1e-4"), 0);
@@ -829,7 +832,9 @@ static void test_dt_above_explicit_limit_is_refused(void **state)
     assert_int_equal(scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message), -1);
     assert_int_equal(scene_derived.modes.n, 5);
     /* omega_5 = 2 pi 3500 Hz: 2 / omega_5 = 9.09e-5 s */
-    snprintf(allowed, sizeof allowed, "dt < %.4g s", 2.0 / scene_derived.modes.omega[4]);
+    bound_text(2.0 / scene_derived.modes.omega[4], 1, limit, sizeof limit);
+    snprintf(allowed, sizeof allowed, "dt < %s s", limit);
+    assert_true(strtod(limit, NULL) <= 2.0 / scene_derived.modes.omega[4]);
     assert_close("2 / omega_max", 2.0 / scene_derived.modes.omega[4], 9.094e-5, 0.0, 1e-3);
     snprintf(where, sizeof where, "%s:%d", field_path, FIELD_LINE);
     assert_message_has(where, "[numerics] dt", "explicit limit", allowed);
@@ -843,19 +848,158 @@ static void test_dt_below_explicit_limit_builds(void **state)
     assert_close("core dt", core_scene.dt, 9e-5, 0.0, 2.0 * SUPPORT_EPS);
 }
 
+/* "allowed: [LOW, HIGH]" of message into low, high; fails if absent. */
+static void allowed_range(double *low, double *high)
+{
+    const char *range = strstr(message, "allowed: [");
+    char *end;
+
+    assert_non_null(range);
+    *low = strtod(range + strlen("allowed: ["), &end);
+    assert_true(end[0] == ',' && end[1] == ' ');
+    *high = strtod(end + 2, &end);
+    assert_true(*end == ']');
+}
+
+/* s0 = text (as the user would type it) must build. */
+static void assert_start_accepted(const char *text)
+{
+    assert_int_equal(scene_set(&read_scene, "run", "s0", text, "--s0", message, sizeof message), 0);
+    message[0] = '\0';
+    if (scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message) != 0) {
+        print_error("s0 = %s, an end of the printed range, refused: %s\n", text, message);
+        fail();
+    }
+}
+
 static void test_free_start_inside_a_clamp_is_refused(void **state)
 {
     char where[SCENE_PATH + 16];
-    char allowed[64];
     const double low = 0.5 * 10e-3 / 0.140; /* B/2 / L of mssp2023 */
+    double printed_low, printed_high;
+    char text[40];
 
     (void)state;
     assert_int_equal(load_field("run", "s0", "0.01"), 0);
     message[0] = '\0';
     assert_int_equal(scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message), -1);
     snprintf(where, sizeof where, "%s:%d", field_path, FIELD_LINE);
-    snprintf(allowed, sizeof allowed, "[%.6g, %.6g]", low, 1.0 - low);
-    assert_message_has(where, "[run] s0", "clamp", allowed);
+    assert_message_has(where, "[run] s0", "clamp", "allowed: [0.0357143, 0.9642857]");
+    allowed_range(&printed_low, &printed_high);
+    assert_close("low end", printed_low, low, 0.0, 1e-6);
+    assert_close("high end", printed_high, 1.0 - low, 0.0, 1e-6);
+    /* each printed end, typed back, starts (%g printed 0.964286, outside) */
+    snprintf(text, sizeof text, "%.17g", printed_low);
+    assert_start_accepted(text);
+    snprintf(text, sizeof text, "%.17g", printed_high);
+    assert_start_accepted(text);
+}
+
+/* A slot a hair narrower than the beam: the ends of the start range differ
+ * in the 7th digit, where %.6g printed "[0.5, 0.5]". */
+static void test_start_range_ends_are_told_apart(void **state)
+{
+    double printed_low, printed_high;
+    char low_text[40], high_text[40];
+
+    (void)state;
+    assert_int_equal(load_field("slider", "slot_width", "0.13999994"), 0);
+    message[0] = '\0';
+    assert_int_equal(scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message), -1);
+    assert_message_has("[run] s0", "clamp");
+    allowed_range(&printed_low, &printed_high);
+    assert_true(printed_low < printed_high);
+    assert_true(printed_low > 0.4999 && printed_high < 0.5001);
+    snprintf(low_text, sizeof low_text, "%.17g", printed_low);
+    snprintf(high_text, sizeof high_text, "%.17g", printed_high);
+    assert_start_accepted(low_text);
+    assert_start_accepted(high_text);
+}
+
+/* The largest count of significant digits of a number in message. */
+static int most_digits_in_message(void)
+{
+    const char *c = message;
+    int most = 0;
+
+    while (*c) {
+        int digits = 0;
+        int leading = 1;
+        if (!isdigit((unsigned char)*c)) {
+            ++c;
+            continue;
+        }
+        for (; isdigit((unsigned char)*c) || *c == '.'; ++c) {
+            if (*c == '.' || (leading && *c == '0'))
+                continue;
+            leading = 0;
+            ++digits;
+        }
+        if (digits > most)
+            most = digits;
+    }
+    return most;
+}
+
+/* Adversarial values used to print ranges and limits with %f (150 digits
+ * for the frequency of a thick beam) or %g (ends that read alike). */
+static void test_range_texts_have_at_most_17_digits(void **state)
+{
+    static const struct { const char *section, *key, *value; } cases[] = {
+        { "beam", "youngs_modulus", "1e200" },
+        { "beam", "youngs_modulus", "1e30" },
+        { "beam", "thickness", "1e100" },
+        { "beam", "density", "1e-200" },
+        { "excitation", "frequency", "1e300" },
+        { "excitation", "frequency", "1.7e308" },
+        { "numerics", "dt", "1e300" },
+        { "slider", "slot_width", "0.13999999999999" },
+        { "slider", "slot_width", "0.14000000000001" },
+    };
+    size_t i;
+
+    (void)state;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        int status = load_field(cases[i].section, cases[i].key, cases[i].value);
+        if (status == 0) {
+            message[0] = '\0';
+            status = scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message);
+        }
+        if (status == 0 || most_digits_in_message() > 17) {
+            print_error("[%s] %s = %s: %s\n", cases[i].section, cases[i].key, cases[i].value,
+                        status == 0 ? "accepted" : message);
+            fail();
+        }
+    }
+}
+
+static void test_bound_texts_stay_on_their_side(void **state)
+{
+    static const double values[] = { 0.9642857142857143, 0.03571428571428571, 1.0 / 3.0, 2.0 / 3.0,
+                                     9.094372e-05, 1e-300, 1.7976931348623157e308, 4.9e-324, 0.5, 100000 };
+    char low[40], high[40], text[40];
+    size_t i;
+
+    (void)state;
+    for (i = 0; i < sizeof values / sizeof values[0]; ++i) {
+        bound_text(values[i], -1, text, sizeof text);
+        assert_true(strtod(text, NULL) >= values[i]);
+        bound_text(values[i], 1, text, sizeof text);
+        assert_true(strtod(text, NULL) <= values[i]);
+        assert_true(strlen(text) <= 24);
+    }
+    bound_text(0.5, 1, text, sizeof text);
+    assert_string_equal(text, "0.5");
+    range_ends_text(0.49999999, 0.50000001, low, high, sizeof low);
+    assert_string_not_equal(low, high);
+    assert_true(strtod(low, NULL) >= 0.49999999 && strtod(high, NULL) <= 0.50000001);
+    range_ends_text(0.0, HUGE_VAL, low, high, sizeof low);
+    assert_string_equal(low, "0");
+    assert_string_equal(high, "inf");
+    range_ends_text(1.0, nextafter(1.0, 2.0), low, high, sizeof low);
+    assert_string_not_equal(low, high);
+    values_text(0.14, 0.13999999999999, low, high, sizeof low);
+    assert_string_not_equal(low, high);
 }
 
 static void test_pcs_start_inside_a_clamp_builds(void **state)
@@ -1022,6 +1166,9 @@ int main(void)
         cmocka_unit_test(test_dt_above_explicit_limit_is_refused),
         cmocka_unit_test(test_dt_below_explicit_limit_builds),
         cmocka_unit_test(test_free_start_inside_a_clamp_is_refused),
+        cmocka_unit_test(test_start_range_ends_are_told_apart),
+        cmocka_unit_test(test_range_texts_have_at_most_17_digits),
+        cmocka_unit_test(test_bound_texts_stay_on_their_side),
         cmocka_unit_test(test_pcs_start_inside_a_clamp_builds),
         cmocka_unit_test(test_slot_as_wide_as_the_beam_is_refused),
         cmocka_unit_test(test_override_applies_a_valid_value),

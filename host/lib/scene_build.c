@@ -178,42 +178,75 @@ static void to_core(const scene_data *d, const shape_fit *fit, bs_scene *scene)
     scene->pgs_tol_abs = (bs_real)d->pgs_tol_abs;
 }
 
-/* Cross-field checks that need derived quantities. */
+/* Cross-field checks that need derived quantities. Bounds are printed with
+ * bound_text: on the allowed side, to as many digits as that takes. */
 static int check_derived(const scene_file *file, const scene_model *model, char *err, size_t size)
 {
     const scene_params *p = &file->params;
     const double omega_max = model->modes.omega[model->modes.n - 1];
     char where[SCENE_PATH + 16];
     char where2[SCENE_PATH + 16];
+    char value[40], limit[40];
 
     if (!(p->slot_width < p->beam.length)) {
-        snprintf(err, size, "%s: [slider] slot_width = %g m must be below [beam] length = %g m (%s)",
-                 scene_where(file, "slider", "slot_width", where, sizeof where), p->slot_width,
-                 p->beam.length, scene_where(file, "beam", "length", where2, sizeof where2));
+        values_text(p->slot_width, p->beam.length, value, limit, sizeof value);
+        snprintf(err, size, "%s: [slider] slot_width = %s m must be below [beam] length = %s m (%s)",
+                 scene_where(file, "slider", "slot_width", where, sizeof where), value, limit,
+                 scene_where(file, "beam", "length", where2, sizeof where2));
         return -1;
     }
     if (!p->implicit && !(omega_max * p->dt < 2.0)) {
+        bound_text(2.0 / omega_max, 1, limit, sizeof limit);
         snprintf(err, size,
                  "%s: [numerics] dt = %g s: omega_max dt = %.4g, above the explicit limit 2 "
-                 "(mode %d, %.1f Hz); allowed: dt < %.4g s, or [numerics] integrator = implicit",
+                 "(mode %d, %.5g Hz); allowed: dt < %s s, or [numerics] integrator = implicit",
                  scene_where(file, "numerics", "dt", where, sizeof where), p->dt, omega_max * p->dt,
-                 model->modes.n, omega_max / (2.0 * 3.14159265358979323846), 2.0 / omega_max);
+                 model->modes.n, omega_max / (2.0 * 3.14159265358979323846), limit);
         return -1;
     }
     if (!(p->frequency * p->dt < 0.5)) {
+        bound_text(0.5 / p->frequency, 1, limit, sizeof limit);
         snprintf(err, size, "%s: [numerics] dt = %g s: fewer than two steps per excitation period "
-                 "(f_ex = %g Hz); allowed: dt < %g s",
-                 scene_where(file, "numerics", "dt", where, sizeof where), p->dt, p->frequency,
-                 0.5 / p->frequency);
+                 "(f_ex = %g Hz); allowed: dt < %s s",
+                 scene_where(file, "numerics", "dt", where, sizeof where), p->dt, p->frequency, limit);
         return -1;
     }
     /* steps are counted exactly in a double: t = n dt */
     if (!(p->t_end / p->dt <= 9007199254740992.0)) {
-        snprintf(err, size, "%s: [run] t_end = %g s is more than 2^53 steps of dt = %g s",
-                 scene_where(file, "run", "t_end", where, sizeof where), p->t_end, p->dt);
+        bound_text(9007199254740992.0 * p->dt, 1, limit, sizeof limit);
+        snprintf(err, size, "%s: [run] t_end = %g s is more than 2^53 steps of dt = %g s; allowed: "
+                 "t_end <= %s s (or a larger dt)",
+                 scene_where(file, "run", "t_end", where, sizeof where), p->t_end, p->dt, limit);
         return -1;
     }
     return 0;
+}
+
+/* x_C = s0 L within the clamp stops, as the core computes it (in bs_real). */
+static int start_inside(const bs_scene *scene, bs_real s0)
+{
+    const bs_real x0 = s0 * scene->length;
+    return x0 >= scene->stop_min && x0 <= scene->stop_max;
+}
+
+static bs_real real_next(bs_real x, bs_real toward)
+{
+#if BS_REAL_FLOAT
+    return nextafterf(x, toward);
+#else
+    return nextafter(x, toward);
+#endif
+}
+
+/* The end of the start range nearest to s (stop_min / L or stop_max / L),
+ * moved in bs_real until the core's own check takes it: every s0 between
+ * the two ends is then a start the core accepts. */
+static double start_range_end(const bs_scene *scene, bs_real s, bs_real inward)
+{
+    int i;
+    for (i = 0; i < 64 && !start_inside(scene, s); ++i)
+        s = real_next(s, inward);
+    return (double)s;
 }
 
 /* The start position, checked as the core checks it: in bs_real, against the
@@ -221,14 +254,16 @@ static int check_derived(const scene_file *file, const scene_model *model, char 
 static int check_start(const scene_file *file, const bs_scene *scene, char *err, size_t size)
 {
     const scene_params *p = &file->params;
-    const bs_real x0 = (bs_real)p->s0 * scene->length;
     char where[SCENE_PATH + 16];
+    char low[40], high[40];
 
-    if (p->model == BS_MODEL_FREE && !(x0 >= scene->stop_min && x0 <= scene->stop_max)) {
+    if (p->model == BS_MODEL_FREE && !start_inside(scene, (bs_real)p->s0)) {
+        range_ends_text(start_range_end(scene, scene->stop_min / scene->length, BS_R(1.0)),
+                        start_range_end(scene, scene->stop_max / scene->length, BS_R(0.0)), low, high,
+                        sizeof low);
         snprintf(err, size, "%s: [run] s0 = %.17g: the slider would start inside a clamp; "
-                 "allowed: [%.6g, %.6g] (slot corners between the clamps)",
-                 scene_where(file, "run", "s0", where, sizeof where), p->s0,
-                 (double)(scene->stop_min / scene->length), (double)(scene->stop_max / scene->length));
+                 "allowed: [%s, %s] (slot corners between the clamps)",
+                 scene_where(file, "run", "s0", where, sizeof where), p->s0, low, high);
         return -1;
     }
     return 0;
