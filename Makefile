@@ -52,13 +52,13 @@ HOST_LIB_SRC := $(wildcard host/lib/*.c) port/host/bs_platform_host.c
 CORE_OBJ := $(CORE_SRC:%.c=$(OBJ)/%.o)
 HOST_CLI_OBJ := $(HOST_CLI_SRC:%.c=$(OBJ)/%.o)
 HOST_LIB_OBJ := $(HOST_LIB_SRC:%.c=$(OBJ)/%.o)
-HOST_LIBS := -linih -lm
+HOST_LIBS := -linih -lcjson -lm
 
 TESTS := $(basename $(notdir $(wildcard tests/test_*.c)))
 TEST_BIN := $(TESTS:%=$(OBJ)/tests/%)
-TEST_LIBS := -lcmocka -lcjson $(HOST_LIBS)
+TEST_LIBS := -lcmocka $(HOST_LIBS)
 
-BUILD_PACKAGES := gcc make libc6-dev libinih-dev
+BUILD_PACKAGES := gcc make libc6-dev libinih-dev libcjson-dev
 TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev libcjson-dev binutils
 
 .PHONY: all run test test-one test-sweeps bench fig6-report configs embedded-test embedded-report stability accuracy accuracy-check clean deps-build deps-test

@@ -315,6 +315,39 @@ static void test_name_defaults_to_file_name_without_ini(void **state)
     assert_string_equal(read_scene.params.name, "my scene");
 }
 
+/* Names go into the JSON summary, which is UTF-8; and a name is never cut
+ * short unseen. */
+static void test_names_must_be_utf8_and_whole(void **state)
+{
+    char path[SCENE_PATH];
+    char name[SCENE_TEXT + 16];
+    char text[512];
+    (void)state;
+    assert_field_refused("scene", "name", "caf\xe9");          /* Latin-1 */
+    assert_message_has("not UTF-8");
+    assert_field_refused("scene", "name", "\xc0\xaf");          /* overlong "/" */
+    assert_field_refused("scene", "name", "\xed\xa0\x80");      /* a surrogate */
+    assert_field_refused("scene", "name", "\xe2\x82");          /* cut short */
+    assert_field_accepted("scene", "name", "caf\xc3\xa9 \xf0\x9f\x8e\xb8");
+    assert_string_equal(read_scene.params.name, "caf\xc3\xa9 \xf0\x9f\x8e\xb8");
+
+    /* the file name stands in for a missing [scene] name only when it can */
+    write_field_scene("numerics", "modes", "5");
+    copy_file(field_path, "caf\xe9.ini");
+    assert_int_equal(load_tmp("caf\xe9.ini", path, sizeof path), -1);
+    assert_message_has(path, "set [scene] name");
+    memset(name, 'n', SCENE_TEXT);
+    strcpy(name + SCENE_TEXT, ".ini");
+    copy_file(field_path, name);
+    assert_int_equal(load_tmp(name, path, sizeof path), -1);
+    assert_message_has("longer than 127 characters", "set [scene] name");
+    snprintf(text, sizeof text, "[scene]\nbase = mssp2023.ini\nname = named\n[excitation]\nfrequency = 124\n"
+                                "acceleration = 14\n[run]\ns0 = 0.3\nt_end = 1\n");
+    write_file(name, text);
+    assert_int_equal(load_tmp(name, path, sizeof path), 0);
+    assert_string_equal(read_scene.params.name, "named");
+}
+
 /* ---- unknown, duplicate and overridden keys --------------------------- */
 
 /* refused at its section line: a section without keys would pass unseen */
@@ -1133,6 +1166,7 @@ int main(void)
         cmocka_unit_test(test_fig6_has_the_section8_values),
         cmocka_unit_test(test_fig6_1mode_has_one_mode_and_fig6_values),
         cmocka_unit_test(test_name_defaults_to_file_name_without_ini),
+        cmocka_unit_test(test_names_must_be_utf8_and_whole),
         cmocka_unit_test(test_unknown_section_is_refused),
         cmocka_unit_test(test_unknown_key_is_refused),
         cmocka_unit_test(test_key_outside_a_section_is_refused),

@@ -8,6 +8,7 @@
 #include <string.h>
 #include "cli.h"
 #include "scene_build.h"
+#include "summary.h"
 #include "sweep.h"
 
 static const char sweep_usage[] =
@@ -233,15 +234,9 @@ int cli_sweep(int argc, char **argv)
     if (r.status != BS_OK)
         cli_error("%s: sweep stopped after %d of %d points: %s; the CSV holds the complete points",
                   file.params.name, r.points_done, points, bs_status_text(r.status));
-    printf("{\"scene\":\"%s\",\"command\":\"sweep\",\"dir\":\"%s\",\"precision\":\"%s\",\"modes\":%d,"
-           "\"dt\":%g,\"status\":\"%s\",\"from\":%.9g,\"to\":%.9g,\"step\":%.9g,\"hold\":%d,\"record\":%d,"
-           "\"points\":%d,\"steps\":%llu,\"wall_s\":%.4g,\"steps_per_s\":%.4g,\"max_pgs_iters\":%d,"
-           "\"unconverged_steps\":%llu,\"contact_steps\":%llu,\"mean_pgs_iters\":%.4g}\n",
-           file.params.name, options.down ? "down" : "up", BS_REAL_NAME, scene.n_modes, file.params.dt,
-           r.write_failed ? "write error" : bs_status_text(r.status), options.from, options.to, options.step,
-           options.hold, options.record, r.points_done, (unsigned long long)r.steps, r.wall_s,
-           r.wall_s > 0.0 ? (double)r.steps / r.wall_s : 0.0, r.max_sweeps,
-           (unsigned long long)r.unconverged_steps, (unsigned long long)r.contact_steps,
-           r.contact_steps ? (double)r.total_sweeps / (double)r.contact_steps : 0.0);
+    if (summary_print_sweep(stdout, &file.params, &scene, &options, &r) != 0) {
+        cli_error("cannot write the summary (out of memory?)");
+        failed = 1;
+    }
     return failed ? CLI_FAILED : CLI_OK;
 }

@@ -197,6 +197,41 @@ static char *read_line(char *str, int num, void *stream)
     return str;
 }
 
+/* 1 if text is well-formed UTF-8 (no overlong forms, surrogates or code
+ * points above U+10FFFF): texts end up in the JSON summary, which must be
+ * UTF-8. */
+static int is_utf8(const char *text)
+{
+    static const unsigned long smallest[4] = { 0, 0x80, 0x800, 0x10000 }; /* by continuation bytes */
+    const unsigned char *c = (const unsigned char *)text;
+
+    while (*c) {
+        int more, i;
+        unsigned long code;
+        if (*c < 0x80) {
+            ++c;
+            continue;
+        }
+        if ((*c & 0xE0) == 0xC0)
+            more = 1, code = *c & 0x1Fu;
+        else if ((*c & 0xF0) == 0xE0)
+            more = 2, code = *c & 0x0Fu;
+        else if ((*c & 0xF8) == 0xF0)
+            more = 3, code = *c & 0x07u;
+        else
+            return 0;
+        for (i = 1; i <= more; ++i) {
+            if ((c[i] & 0xC0) != 0x80) /* also stops at the terminating NUL */
+                return 0;
+            code = code << 6 | (c[i] & 0x3Fu);
+        }
+        if (code < smallest[more] || (code >= 0xD800 && code <= 0xDFFF) || code > 0x10FFFF)
+            return 0;
+        c += 1 + more;
+    }
+    return 1;
+}
+
 static int field_index(const char *section, const char *key)
 {
     int i;
@@ -217,6 +252,10 @@ static int assign(scene_params *params, const field_spec *f, const char *value, 
     if (f->kind == FIELD_TEXT) {
         if (strlen(value) >= SCENE_TEXT) {
             snprintf(why, size, "too long; allowed: %s", range);
+            return -1;
+        }
+        if (!is_utf8(value)) {
+            snprintf(why, size, "not UTF-8 text; allowed: %s (UTF-8)", range);
             return -1;
         }
         strcpy(target, value);
@@ -499,7 +538,9 @@ static int load_file(scene_file *scene, const char *path, char *err, size_t err_
     return run_parser(&p);
 }
 
-static void default_name(scene_file *scene, const char *path)
+/* The file name without its folder and .ini, unless it cannot serve as the
+ * name (too long, not UTF-8): then 0, and a [scene] name must be given. */
+static int default_name(scene_file *scene, const char *path)
 {
     const char *slash = strrchr(path, '/');
     const char *base = slash ? slash + 1 : path;
@@ -507,20 +548,22 @@ static void default_name(scene_file *scene, const char *path)
     if (length > 4 && !strcmp(base + length - 4, ".ini"))
         length -= 4;
     if (length >= SCENE_TEXT)
-        length = SCENE_TEXT - 1;
+        return 0;
     memcpy(scene->params.name, base, length);
     scene->params.name[length] = '\0';
+    return is_utf8(scene->params.name);
 }
 
 int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
 {
     int i;
+    int name_from_path;
 
     memset(scene, 0, sizeof *scene);
     for (i = 0; i < SCENE_MAX_FIELDS; ++i)
         scene->set_file[i] = SCENE_NOT_SET;
-    ini_allow_multiline = 0; /* an indented line is an error, not a silent continuation */
-    default_name(scene, path);
+    ini_allow_multiline = 0; /* an indented line without = is an error, not a silent continuation */
+    name_from_path = default_name(scene, path);
     for (i = 0; scene_fields[i].key; ++i) { /* optional fields start at their defaults */
         const field_spec *f = &scene_fields[i];
         char why[160];
@@ -539,6 +582,11 @@ int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
         field_range_text(f, range, sizeof range);
         snprintf(err, err_size, "%s: missing field [%s] %s (%s; allowed: %s)%s", path, f->section, f->key,
                  f->meaning, range, scene->file_count > 1 ? " in the file and its base" : "");
+        return -1;
+    }
+    if (!name_from_path && scene->set_file[field_index("scene", "name")] == SCENE_NOT_SET) {
+        snprintf(err, err_size, "%s: the file name cannot be the scene's name (longer than %d characters "
+                 "or not UTF-8): set [scene] name", path, SCENE_TEXT - 1);
         return -1;
     }
     return 0;
