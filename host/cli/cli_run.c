@@ -76,10 +76,6 @@ static int parse_options(int argc, char **argv, run_cli *cli, scene_file *file)
             return -1;
         }
     }
-    if (cli->out_path && cli->periods_path && !strcmp(cli->out_path, cli->periods_path)) {
-        cli_error("--out and --periods both name %s: each needs its own file", cli->out_path);
-        return -1;
-    }
     return 0;
 }
 
@@ -107,8 +103,9 @@ int cli_run(int argc, char **argv)
     run_options options;
     run_result result;
     char err[1024];
+    cli_output outputs[2];
     FILE *csv, *periods;
-    int failed;
+    int failed, status;
 
     if (parse_options(argc, argv, &cli, &file) != 0)
         return CLI_USAGE;
@@ -117,13 +114,14 @@ int cli_run(int argc, char **argv)
         return CLI_USAGE;
     }
     /* outputs are opened only once the input is known to be good */
-    if (cli_open_output(cli.out_path, &csv) != 0)
-        return CLI_FAILED;
-    if (cli_open_output(cli.periods_path, &periods) != 0) {
-        if (csv)
-            fclose(csv);
-        return CLI_FAILED;
-    }
+    outputs[0].option = "--out";
+    outputs[0].path = cli.out_path;
+    outputs[1].option = "--periods";
+    outputs[1].path = cli.periods_path;
+    if ((status = cli_open_outputs(outputs, 2, &file)) != CLI_OK)
+        return status;
+    csv = outputs[0].file;
+    periods = outputs[1].file;
     options.model = (bs_model)file.params.model;
     options.s0 = file.params.s0;
     options.t_end = file.params.t_end;

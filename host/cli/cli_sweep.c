@@ -199,8 +199,9 @@ int cli_sweep(int argc, char **argv)
     sweep_options options;
     sweep_result r;
     char err[1024];
+    cli_output outputs[2];
     FILE *csv, *trace;
-    int failed, points;
+    int failed, points, status;
 
     if (argc >= 1 && (!strcmp(argv[0], "--help") || !strcmp(argv[0], "-h"))) {
         fputs(sweep_usage, stdout);
@@ -212,12 +213,14 @@ int cli_sweep(int argc, char **argv)
         cli_error("%s", err);
         return CLI_USAGE;
     }
-    if (cli_open_output(cli.out_path, &csv) != 0)
-        return CLI_FAILED;
-    if (cli_open_output(cli.trace_path, &trace) != 0) {
-        fclose(csv);
-        return CLI_FAILED;
-    }
+    outputs[0].option = "--out";
+    outputs[0].path = cli.out_path;
+    outputs[1].option = "--trace";
+    outputs[1].path = cli.trace_path;
+    if ((status = cli_open_outputs(outputs, 2, &file)) != CLI_OK)
+        return status;
+    csv = outputs[0].file;
+    trace = outputs[1].file;
     points = sweep_grid_size(options.from, options.to, options.step);
     options.dt = file.params.dt;
     options.csv = csv;

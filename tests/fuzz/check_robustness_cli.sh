@@ -72,6 +72,60 @@ expect "more steps than a double counts exactly" 2 "[run] t_end = 1e+09 s is mor
     run "$tmp/good.ini" --dt 1e-12 --t-end 1e9
 expect "--out and --periods naming one file" 2 "--out and --periods both name" \
     run "$tmp/good.ini" --out "$tmp/same.csv" --periods "$tmp/same.csv"
+
+# ---- outputs compared as files, opened all or none (they used to be
+# compared as strings, sweep's --trace not at all, and --out was truncated
+# before --periods failed to open)
+# unchanged DESCRIPTION FILE: FILE still holds "keep"
+unchanged() {
+    if [ "$(cat "$2")" = keep ]; then
+        passed=$((passed + 1)); echo "ok   - $1"
+    else
+        failed=$((failed + 1)); echo "FAIL - $1: $2 holds $(head -c 80 "$2")"
+    fi
+}
+echo keep >"$tmp/keep.csv"
+ln -s keep.csv "$tmp/symlink.csv"
+ln "$tmp/keep.csv" "$tmp/hardlink.csv"
+ln -s nowhere.csv "$tmp/dangling.csv"
+mkdir "$tmp/sub"
+expect "--out ./x and --periods x are one file" 2 "are the same file" \
+    run "$tmp/good.ini" --out "$tmp/./keep.csv" --periods "$tmp/keep.csv"
+expect "a symbolic link to --out as --periods" 2 "are the same file" \
+    run "$tmp/good.ini" --out "$tmp/keep.csv" --periods "$tmp/symlink.csv"
+expect "a hard link to --out as --periods" 2 "are the same file" \
+    run "$tmp/good.ini" --out "$tmp/hardlink.csv" --periods "$tmp/keep.csv"
+unchanged "outputs that are one file leave it untouched" "$tmp/keep.csv"
+expect "two spellings of a file still to be created" 2 "are the same file" \
+    run "$tmp/good.ini" --out "$tmp/new.csv" --periods "$tmp/sub/../new.csv"
+expect "a dangling link to --out as --periods" 2 "are the same file" \
+    run "$tmp/good.ini" --out "$tmp/nowhere.csv" --periods "$tmp/dangling.csv"
+stdout=$tmp/summary.txt
+expect "--out /dev/stdout when standard output is a file" 2 "is where standard output goes" \
+    run "$tmp/good.ini" --out /dev/stdout
+expect "--out naming the file standard output goes to" 2 "is where standard output goes" \
+    run "$tmp/good.ini" --out "$tmp/summary.txt"
+stdout=$tmp/out
+expect "sweep --out and --trace are one file" 2 "are the same file" \
+    sweep "$tmp/good.ini" --dir up --out "$tmp/keep.csv" --trace "$tmp/symlink.csv" --trace-at 0.2 \
+    --from 0.2 --to 0.21 --step 0.01 --hold 1 --record 1
+unchanged "sweep leaves it untouched" "$tmp/keep.csv"
+expect "the scene file as --out" 2 "is the scene file" run "$tmp/good.ini" --out "$tmp/./good.ini"
+expect "the base file as --periods" 2 "is the scene's base file" run "$tmp/good.ini" --periods "$tmp/mssp2023.ini"
+expect "the scene file as sweep --out" 2 "is the scene file" \
+    sweep "$tmp/good.ini" --dir up --out "$tmp/good.ini" --from 0.2 --to 0.21 --step 0.01
+expect "a --periods that cannot be opened" 1 "cannot open $tmp/none/p.csv" \
+    run "$tmp/good.ini" --out "$tmp/keep.csv" --periods "$tmp/none/p.csv"
+unchanged "... leaves --out untouched" "$tmp/keep.csv"
+expect "a --trace that cannot be opened" 1 "cannot open $tmp/none/t.csv" \
+    sweep "$tmp/good.ini" --dir up --out "$tmp/fresh.csv" --trace "$tmp/none/t.csv" --trace-at 0.2 \
+    --from 0.2 --to 0.21 --step 0.01
+if [ -e "$tmp/fresh.csv" ]; then
+    failed=$((failed + 1)); echo "FAIL - ... and leaves no new --out file behind"
+else
+    passed=$((passed + 1)); echo "ok   - ... and leaves no new --out file behind"
+fi
+expect "two outputs to /dev/null run" 0 "" run "$tmp/good.ini" --out /dev/null --periods /dev/null
 expect "a contact-solve cap above the real-time range" 2 "allowed: an integer in [1, 100000]" \
     run "$tmp/good.ini" --pgs-iters 1000000
 # text after the ] of a section line, CR-only line ends: libinih would drop
