@@ -10,6 +10,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include "support.h"
+#include "scene_limits.h"
 
 #include <ctype.h>
 #include <dirent.h>
@@ -1055,6 +1056,171 @@ static void test_slot_as_wide_as_the_beam_is_refused(void **state)
     assert_message_has(where, "[slider] slot_width", "[beam] length");
 }
 
+/* ---- extreme values: derived quantities out of their number range ----- */
+
+/* Each value is in its field's range, but a quantity derived from it
+ * overflows or underflows (found with a script trying tiny and huge values
+ * of every field, docs/robustness.md). The refusal must name the field where
+ * it was set, with a range, and not blame another field: a denormal
+ * thickness used to give NaN frequencies and a message about dt. */
+static void test_extreme_values_are_blamed_on_their_field(void **state)
+{
+    static const struct { const char *section, *key, *value; } cases[] = {
+        { "beam", "thickness", "1e-320" },      /* the denormal of the report: NaN modes */
+        { "beam", "thickness", "1.7e308" },
+        { "beam", "length", "1e-320" },
+        { "beam", "length", "1e300" },
+        { "beam", "density", "1e-320" },
+        { "beam", "youngs_modulus", "1e-320" },
+        { "beam", "mass", "1e-320" },
+        { "beam", "mass", "1.7e308" },
+        { "clamps", "rotational_stiffness", "1.7e308" },
+        { "slider", "mass", "1e-320" },
+        { "slider", "inertia", "1e-320" },
+        { "slider", "slot_width", "1e-320" },
+        { "slider", "com_offset", "1.7e308" },
+        { "excitation", "frequency", "1e-320" },
+        { "excitation", "acceleration", "1.7e308" },
+        { "numerics", "dt", "1e-320" },
+    };
+    char where[SCENE_PATH + 16];
+    char field[96];
+    size_t i;
+
+    (void)state;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        int status = load_field(cases[i].section, cases[i].key, cases[i].value);
+        if (status == 0) {
+            message[0] = '\0';
+            status = scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message);
+        }
+        snprintf(where, sizeof where, "%s:%d: ", field_path, FIELD_LINE);
+        snprintf(field, sizeof field, "[%s] %s = ", cases[i].section, cases[i].key);
+        if (status == 0 || strncmp(message, where, strlen(where)) || !strstr(message, field)
+            || !strstr(message, "allowed") || strstr(message, "nan") || strstr(message, "inf Hz")
+            || strstr(message, "explicit limit")) {
+            print_error("[%s] %s = %s: %s\n", cases[i].section, cases[i].key, cases[i].value,
+                        status == 0 ? "accepted" : message);
+            fail();
+        }
+    }
+}
+
+/* The range a message gives for a field: a value at either end passes the
+ * checks of extreme values (the other fields as set). */
+static void test_range_of_an_extreme_field_is_one_that_passes(void **state)
+{
+    double low, high;
+    char text[40];
+
+    (void)state;
+    assert_int_equal(load_field("beam", "thickness", "1e-320"), 0);
+    assert_int_equal(scene_limits_range(&read_scene, "beam", "thickness", &low, &high), 0);
+    assert_true(low > 1e-320 && low < 1e-3 && high > 1e-3);
+    message[0] = '\0';
+    assert_int_equal(scene_limits_check(&read_scene, message, sizeof message), -1);
+    bound_text(low, -1, text, sizeof text);
+    assert_message_has("[beam] thickness = ", text);
+    assert_int_equal(scene_set(&read_scene, "beam", "thickness", text, "--h", message, sizeof message), 0);
+    if (scene_limits_check(&read_scene, message, sizeof message) != 0) {
+        print_error("thickness = %s, the low end of its range: %s\n", text, message);
+        fail();
+    }
+    bound_text(high, 1, text, sizeof text);
+    assert_int_equal(scene_set(&read_scene, "beam", "thickness", text, "--h", message, sizeof message), 0);
+    if (scene_limits_check(&read_scene, message, sizeof message) != 0) {
+        print_error("thickness = %s, the high end of its range: %s\n", text, message);
+        fail();
+    }
+}
+
+/* Values that overflow only together: the message names each input with
+ * where it was set and its range, and the range's end builds. It used to
+ * say "the core refuses the scene ... (field base_accel/...)" with no line
+ * and no range. */
+static void test_inputs_overflowing_together_are_each_named_with_a_range(void **state)
+{
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    const char *acceleration;
+    char text[40];
+
+    /* each within what bs_real holds, a / (2 pi f)^2 not */
+    const char *const scene = BS_REAL_FLOAT
+        ? "[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 1e-6\nacceleration = 1e30\n[run]\ns0 = 0.3\nt_end = 1\n"
+        : "[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 1e-5\nacceleration = 1e300\n[run]\ns0 = 0.3\nt_end = 1\n";
+    const char *const given = BS_REAL_FLOAT ? "[excitation] acceleration = 1e+30 m/s^2 ("
+                                            : "[excitation] acceleration = 1e+300 m/s^2 (";
+
+    (void)state;
+    write_file("together.ini", scene); /* frequency on line 4, acceleration on line 5 */
+    assert_int_equal(load_tmp("together.ini", path, sizeof path), 0);
+    message[0] = '\0';
+    assert_int_equal(scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message), -1);
+    place(where, sizeof where, path, 5);
+    assert_message_has(where, "base displacement", given, "[excitation] frequency = ");
+    snprintf(where, sizeof where, "%s:4): [", path);
+    assert_message_has(where);
+    acceleration = strstr(message, given);
+    acceleration = strstr(acceleration, "): [0, ");
+    assert_non_null(acceleration);
+    snprintf(text, sizeof text, "%.*s", (int)strcspn(acceleration + 7, "]"), acceleration + 7);
+    assert_int_equal(scene_set(&read_scene, "excitation", "acceleration", text, "--a", message, sizeof message), 0);
+    message[0] = '\0';
+    if (scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message) != 0) {
+        print_error("acceleration = %s, the end of its range: %s\n", text, message);
+        fail();
+    }
+}
+
+/* A large offset d next to a small play: rounded to bs_real, the corners
+ * R/2 + d and -R/2 + d lose the play (the core refused it as "corner"). */
+static void test_offset_that_rounds_the_play_away_is_refused_with_a_range(void **state)
+{
+    char where[SCENE_PATH + 16];
+    const char *range;
+    double low, high;
+    char text[40];
+
+    (void)state;
+    assert_int_equal(load_field("slider", "com_offset", "1e13"), 0);
+    message[0] = '\0';
+    assert_int_equal(scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message), -1);
+    snprintf(where, sizeof where, "%s:%d:", field_path, FIELD_LINE);
+    assert_message_has(where, "[slider] com_offset", "play", "allowed: [");
+    range = strstr(message, "allowed: [") + strlen("allowed: [");
+    low = strtod(range, (char **)&range);
+    assert_true(range[0] == ',');
+    high = strtod(range + 2, NULL);
+    assert_true(low == -high && high > 0.14);
+    snprintf(text, sizeof text, "%.17g", high);
+    assert_int_equal(scene_set(&read_scene, "slider", "com_offset", text, "--d", message, sizeof message), 0);
+    message[0] = '\0';
+    if (scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message) != 0) {
+        print_error("com_offset = %s, the end of its range: %s\n", text, message);
+        fail();
+    }
+}
+
+/* A slot a hair narrower than the beam passes the check in double; in float
+ * the clamp stops B/2 and L - B/2 round together (the core refused it as
+ * "stop_min/stop_max", naming no line). */
+static void test_slot_that_rounds_to_the_beam_length_is_refused(void **state)
+{
+    char where[SCENE_PATH + 16];
+
+    (void)state;
+    if (!BS_REAL_FLOAT) {
+        skip();
+        return;
+    }
+    assert_int_equal(load_field("slider", "slot_width", "0.1399999995"), 0);
+    message[0] = '\0';
+    assert_int_equal(scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message), -1);
+    snprintf(where, sizeof where, "%s:%d:", field_path, FIELD_LINE);
+    assert_message_has(where, "[slider] slot_width", "[beam] length", "allowed: slot_width < 0.13999998");
+}
+
 /* ---- scene_set: command-line overrides -------------------------------- */
 
 static void test_override_applies_a_valid_value(void **state)
@@ -1205,6 +1371,11 @@ int main(void)
         cmocka_unit_test(test_bound_texts_stay_on_their_side),
         cmocka_unit_test(test_pcs_start_inside_a_clamp_builds),
         cmocka_unit_test(test_slot_as_wide_as_the_beam_is_refused),
+        cmocka_unit_test(test_extreme_values_are_blamed_on_their_field),
+        cmocka_unit_test(test_range_of_an_extreme_field_is_one_that_passes),
+        cmocka_unit_test(test_inputs_overflowing_together_are_each_named_with_a_range),
+        cmocka_unit_test(test_offset_that_rounds_the_play_away_is_refused_with_a_range),
+        cmocka_unit_test(test_slot_that_rounds_to_the_beam_length_is_refused),
         cmocka_unit_test(test_override_applies_a_valid_value),
         cmocka_unit_test(test_options_leave_the_base_file_slots_alone),
         cmocka_unit_test(test_override_refuses_a_bad_value_naming_the_option),

@@ -66,8 +66,13 @@ fi
 # values each in range whose product overflows: the start height
 # base_displacement - com_offset = a / (2 pi f)^2 - d
 printf "$good" | sed 's/^frequency = 124$/frequency = 1e-160/' >"$tmp/overflow.ini"
-expect "excitation whose displacement overflows: names the fields" 2 "[excitation] acceleration, frequency" \
-    run "$tmp/overflow.ini"
+expect "excitation whose displacement overflows: blames the frequency's line" 2 \
+    "overflow.ini:4: the values make the base" run "$tmp/overflow.ini"
+expect "... and gives the acceleration's line and range" 2 \
+    "[excitation] acceleration = 14 m/s^2 ($tmp/overflow.ini:5): [0, " run "$tmp/overflow.ini"
+# a denormal thickness gave NaN frequencies, blamed on dt
+printf "$good" | sed 's/^\[excitation\]$/[beam]\nthickness = 1e-320\n[excitation]/' >"$tmp/denormal.ini"
+expect "a denormal thickness is blamed on the thickness" 2 "denormal.ini:4: the values make" run "$tmp/denormal.ini"
 expect "more steps than a double counts exactly" 2 "[run] t_end = 1e+09 s is more than 2^53 steps" \
     run "$tmp/good.ini" --dt 1e-12 --t-end 1e9
 expect "--out and --periods naming one file" 2 "--out and --periods both name" \
