@@ -12,7 +12,8 @@
 #                         memcheck (test_sim: all but its two long runs)
 #   make fuzz-short       every fuzz target for FUZZ_TEST_SECONDS (60) each,
 #                         FUZZ_JOBS (2) at a time
-#   make robustness-cli   regression checks of the CLI fixes, float and double
+#   make robustness-cli   regression checks of the CLI fixes and every real field
+#                         at tiny and huge values, float and double
 #
 # `make test` runs robustness-cli, robustness-asan, robustness-valgrind and fuzz-short
 # (TEST_EXTRA). Knobs: FUZZ_CC (clang), ASAN_CC (gcc), FUZZ_SECONDS,
@@ -184,5 +185,7 @@ robustness-cli:
 	@$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
 	@sh tests/fuzz/check_robustness_cli.sh $(BUILD)/double/beamslider
 	@sh tests/fuzz/check_robustness_cli.sh $(BUILD)/float/beamslider
+	@sh tests/fuzz/check_extreme_values.sh $(BUILD)/double/beamslider
+	@sh tests/fuzz/check_extreme_values.sh $(BUILD)/float/beamslider
 
 TEST_EXTRA += robustness-cli robustness-asan robustness-valgrind fuzz-short

@@ -3,7 +3,11 @@
 # docs/robustness.md found mishandled (tests/robustness.mk: robustness-cli):
 # a NUL byte or UTF-16 text in a scene, a folder given as the scene, standard
 # output that cannot be written, a start position at the edge of its range
-# (host check in double, core check in bs_real). Run from the repository root.
+# (host check in double, core check in bs_real), text after a section's ],
+# CR-only line ends, /dev/zero or a FIFO as a scene or base, options that
+# used up the base-file slots, outputs that are one file (or the scene, or
+# standard output) and outputs truncated before another failed to open,
+# values that overflow together. Run from the repository root.
 bin=$1
 passed=0
 failed=0
