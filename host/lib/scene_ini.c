@@ -12,8 +12,11 @@
  *   - a section line that is not exactly [name] with a known name, followed
  *     at most by a ; comment: text after the ] would be ignored;
  *   - a file larger than SCENE_MAX_BYTES.
- * Only regular files are read (a FIFO or /dev/zero would never end). The
- * first error wins and names file, line, field, value and the allowed range.
+ * Only regular files are read (a FIFO or /dev/zero would never end). Each
+ * file is read twice (for its base, then for its values): errors in the text
+ * itself (the reader's, libinih's syntax errors) are found in the first pass
+ * and so come before errors of values, even at a later line. The first error
+ * wins and names file, line, field, value and the allowed range.
  */
 #define _POSIX_C_SOURCE 200809L /* open, fstat, fcntl, fdopen */
 

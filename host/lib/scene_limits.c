@@ -293,12 +293,15 @@ static void append(char *out, size_t size, const char *text)
         snprintf(out + used, size - used, "%.*s...", (int)(size - used - 4), text);
 }
 
-/* "[low, high]", with ( or ) at an infinite end (never allowed). */
-static void interval_text(double low, double high, char *out, size_t size)
+/* "[low, high]" of field f, with ( or ) at an end that is not allowed: an
+ * infinite one, or the field's own open bound. */
+static void interval_text(const field_spec *f, double low, double high, char *out, size_t size)
 {
     char low_text[40], high_text[40];
+    const int low_open = isinf(low) || (low == f->low && f->low_open);
+    const int high_open = isinf(high) || (high == f->high && f->high_open);
     range_ends_text(low, high, low_text, high_text, sizeof low_text);
-    snprintf(out, size, "%c%s, %s%c", isinf(low) ? '(' : '[', low_text, high_text, isinf(high) ? ')' : ']');
+    snprintf(out, size, "%c%s, %s%c", low_open ? '(' : '[', low_text, high_text, high_open ? ')' : ']');
 }
 
 static void describe_input(const scene_file *file, const scene_input *input, char *out, size_t size)
@@ -318,7 +321,7 @@ static void describe_input(const scene_file *file, const scene_input *input, cha
                  input->key, value_of(&file->params, input->section, input->key), *unit ? " " : "", unit, where);
         return;
     }
-    interval_text(low, high, interval, sizeof interval);
+    interval_text(f, low, high, interval, sizeof interval);
     snprintf(out, size, "[%s] %s = %g%s%s (%s): %s%s%s", input->section, input->key,
              value_of(&file->params, input->section, input->key), *unit ? " " : "", unit, where, interval,
              *unit ? " " : "", unit);
