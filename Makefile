@@ -66,15 +66,15 @@ HOST_LIB_SRC := $(wildcard host/lib/*.c) port/host/bs_platform_host.c
 CORE_OBJ := $(CORE_SRC:%.c=$(OBJ)/%.o)
 HOST_CLI_OBJ := $(HOST_CLI_SRC:%.c=$(OBJ)/%.o)
 HOST_LIB_OBJ := $(HOST_LIB_SRC:%.c=$(OBJ)/%.o)
-HOST_LIBS := -linih -lm
+HOST_LIBS := -linih -lcjson -lm
 
 TESTS := $(basename $(notdir $(wildcard tests/test_*.c)))
 # ... and the C++ one (tests/test_cxx.cpp, below)
 TEST_BIN := $(TESTS:%=$(OBJ)/tests/%) $(OBJ)/tests/test_cxx
-TEST_LIBS := -lcmocka -lcjson $(HOST_LIBS)
+TEST_LIBS := -lcmocka $(HOST_LIBS)
 
-BUILD_PACKAGES := gcc make libc6-dev libinih-dev
-TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev libcjson-dev binutils g++ cmake pkg-config
+BUILD_PACKAGES := gcc make libc6-dev libinih-dev libcjson-dev
+TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev binutils g++ cmake pkg-config
 
 .PHONY: all run test test-long test-one embedded-long test-sweeps lib install uninstall configs fields accuracy-check clean deps-build deps-test .force
 .SECONDARY:

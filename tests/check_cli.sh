@@ -77,6 +77,15 @@ else
     fail "JSON steps = 10000" "$(cat "$tmp/run.json")"
 fi
 
+# ---- the summary escapes the scene name (it comes from the file name when
+# [scene] name is not set, and a file name may hold quotes and backslashes)
+cp configs/mssp2023.ini "$tmp/mssp2023.ini"
+printf '[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\nacceleration = 14\n[run]\ns0 = 0.3\nt_end = 0.001\n' \
+    >"$tmp/q\"b\\c.ini"
+"$bin" run "$tmp/q\"b\\c.ini" >"$tmp/name.json" 2>"$tmp/name.err"
+check_status "run of a scene whose file name holds a quote and a backslash exits 0" 0 $? "$tmp/name.err"
+check_has "the summary escapes the quote and the backslash of the name" "$tmp/name.json" '{"scene":"q\"b\\c","model"'
+
 # ---- bad usage: exit 2 and a message on stderr
 "$bin" run configs/fig6.ini --bogus 1 >"$tmp/o" 2>"$tmp/e"
 check_status "unknown option exits 2" 2 $? "$tmp/e"

@@ -12,7 +12,8 @@
 #                         memcheck (test_sim: all but its two long runs)
 #   make fuzz-short       a smoke run: every fuzz target for FUZZ_TEST_SECONDS (3)
 #                         each, FUZZ_JOBS (2) at a time
-#   make robustness-cli   regression checks of the CLI fixes, float and double
+#   make robustness-cli   regression checks of the CLI fixes and every real field
+#                         at tiny and huge values, float and double
 #
 # `make test` runs robustness-cli, robustness-asan and fuzz-short (TEST_EXTRA);
 # `make test-long` robustness-valgrind and fuzz (TEST_LONG). Knobs: FUZZ_CC (clang), ASAN_CC (gcc), FUZZ_SECONDS,
@@ -189,6 +190,8 @@ robustness-cli:
 	@$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
 	@sh tests/fuzz/check_robustness_cli.sh $(BUILD)/double/beamslider
 	@sh tests/fuzz/check_robustness_cli.sh $(BUILD)/float/beamslider
+	@sh tests/fuzz/check_extreme_values.sh $(BUILD)/double/beamslider
+	@sh tests/fuzz/check_extreme_values.sh $(BUILD)/float/beamslider
 
 TEST_EXTRA += robustness-cli robustness-asan fuzz-short
 TEST_LONG += robustness-valgrind fuzz-minute

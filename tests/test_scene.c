@@ -10,11 +10,15 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include "support.h"
+#include "scene_limits.h"
 
+#include <ctype.h>
 #include <dirent.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 /* static: large */
@@ -312,15 +316,55 @@ static void test_name_defaults_to_file_name_without_ini(void **state)
     assert_string_equal(read_scene.params.name, "my scene");
 }
 
+/* Names go into the JSON summary, which is UTF-8; and a name is never cut
+ * short unseen. */
+static void test_names_must_be_utf8_and_whole(void **state)
+{
+    char path[SCENE_PATH];
+    char name[SCENE_TEXT + 16];
+    char text[512];
+    (void)state;
+    assert_field_refused("scene", "name", "caf\xe9");          /* Latin-1 */
+    assert_message_has("not UTF-8");
+    assert_field_refused("scene", "name", "\xc0\xaf");          /* overlong "/" */
+    assert_field_refused("scene", "name", "\xed\xa0\x80");      /* a surrogate */
+    assert_field_refused("scene", "name", "\xe2\x82");          /* cut short */
+    assert_field_accepted("scene", "name", "caf\xc3\xa9 \xf0\x9f\x8e\xb8");
+    assert_string_equal(read_scene.params.name, "caf\xc3\xa9 \xf0\x9f\x8e\xb8");
+
+    /* the file name stands in for a missing [scene] name only when it can */
+    write_field_scene("numerics", "modes", "5");
+    copy_file(field_path, "caf\xe9.ini");
+    assert_int_equal(load_tmp("caf\xe9.ini", path, sizeof path), -1);
+    assert_message_has(path, "set [scene] name");
+    memset(name, 'n', SCENE_TEXT);
+    strcpy(name + SCENE_TEXT, ".ini");
+    copy_file(field_path, name);
+    assert_int_equal(load_tmp(name, path, sizeof path), -1);
+    assert_message_has("longer than 127 characters", "set [scene] name");
+    snprintf(text, sizeof text, "[scene]\nbase = mssp2023.ini\nname = named\n[excitation]\nfrequency = 124\n"
+                                "acceleration = 14\n[run]\ns0 = 0.3\nt_end = 1\n");
+    write_file(name, text);
+    assert_int_equal(load_tmp(name, path, sizeof path), 0);
+    assert_string_equal(read_scene.params.name, "named");
+}
+
 /* ---- unknown, duplicate and overridden keys --------------------------- */
 
+/* refused at its section line: a section without keys would pass unseen */
 static void test_unknown_section_is_refused(void **state)
 {
+    char path[SCENE_PATH];
     char where[SCENE_PATH + 16];
     (void)state;
     assert_int_equal(load_field("beams", "length", "0.14"), -1);
-    place(where, sizeof where, field_path, FIELD_LINE);
-    assert_message_has(where, "unknown", "[beams] length");
+    place(where, sizeof where, field_path, FIELD_LINE - 1);
+    assert_message_has(where, "unknown section [beams]", "allowed: scene, beam, clamps");
+    write_file("emptysection.ini", "[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\n"
+                                   "acceleration = 14\n[run]\ns0 = 0.3\nt_end = 1\n[exitation]\n");
+    assert_int_equal(load_tmp("emptysection.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 9);
+    assert_message_has(where, "unknown section [exitation]");
 }
 
 static void test_unknown_key_is_refused(void **state)
@@ -340,7 +384,18 @@ static void test_key_outside_a_section_is_refused(void **state)
     write_file("nosection.ini", "dt = 1e-5\n[scene]\nbase = mssp2023.ini\n");
     assert_int_equal(load_tmp("nosection.ini", path, sizeof path), -1);
     place(where, sizeof where, path, 1);
-    assert_message_has(where, "unknown", "dt");
+    assert_message_has(where, "dt = 1e-5", "before any [section]");
+}
+
+static void test_key_without_a_name_is_refused(void **state)
+{
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    (void)state;
+    write_file("nokey.ini", "[scene]\nbase = mssp2023.ini\n[run]\n= 0.3\n");
+    assert_int_equal(load_tmp("nokey.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 4);
+    assert_message_has(where, "no key", "= 0.3");
 }
 
 static void test_key_set_twice_names_both_lines(void **state)
@@ -554,6 +609,76 @@ static void test_error_in_the_base_names_the_base(void **state)
     assert_message_has(where, "[beam] length");
 }
 
+/* ---- what is read: regular files, at most SCENE_MAX_BYTES ------------- */
+
+/* /dev/zero never ends and a FIFO waits for a writer: both used to hang */
+static void test_base_that_is_not_a_regular_file_is_refused(void **state)
+{
+    char path[SCENE_PATH];
+    char fifo[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+
+    (void)state;
+    alarm(60); /* a hang ends the program (SIGALRM) instead of the test run */
+    write_file("zero.ini", "[scene]\nbase = /dev/zero\n");
+    assert_int_equal(load_tmp("zero.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 2);
+    assert_message_has(where, "/dev/zero", "a character device, not a regular file");
+
+    tmp_path(fifo, sizeof fifo, "fifo.ini");
+    assert_int_equal(mkfifo(fifo, 0600), 0);
+    write_file("onfifo.ini", "[scene]\nbase = fifo.ini\n");
+    assert_int_equal(load_tmp("onfifo.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 2);
+    assert_message_has(where, fifo, "FIFO", "not a regular file");
+    assert_int_equal(load_tmp("fifo.ini", path, sizeof path), -1);
+    assert_message_has(fifo, "cannot read scene file", "not a regular file");
+    alarm(0);
+}
+
+static void test_folder_as_scene_is_refused(void **state)
+{
+    (void)state;
+    message[0] = '\0';
+    assert_int_equal(scene_load(tmp_dir, &read_scene, message, sizeof message), -1);
+    assert_message_has(tmp_dir, "cannot read scene file", "a folder, not a regular file");
+}
+
+/* A valid scene padded with comment lines to size bytes, as big.ini. */
+static void write_padded_scene(long size)
+{
+    static const char head[] = "[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\n"
+                               "acceleration = 14\n[run]\ns0 = 0.3\nt_end = 1\n";
+    char path[SCENE_PATH];
+    long used = (long)sizeof head - 1;
+    FILE *out;
+
+    tmp_path(path, sizeof path, "big.ini");
+    out = fopen(path, "w");
+    assert_non_null(out);
+    assert_true(fputs(head, out) >= 0);
+    for (; used + 100 <= size; used += 100)
+        assert_true(fprintf(out, ";%98s\n", "padding") == 100);
+    for (; used < size; ++used)
+        assert_true(fputc('\n', out) == '\n');
+    assert_int_equal(fclose(out), 0);
+}
+
+static void test_scene_file_over_the_size_limit_is_refused(void **state)
+{
+    char path[SCENE_PATH];
+
+    (void)state;
+    write_padded_scene(SCENE_MAX_BYTES);
+    if (load_tmp("big.ini", path, sizeof path) != 0) {
+        print_error("a scene of exactly SCENE_MAX_BYTES: %s\n", message);
+        fail();
+    }
+    write_padded_scene(SCENE_MAX_BYTES + 1);
+    assert_int_equal(load_tmp("big.ini", path, sizeof path), -1);
+    assert_message_has(path, "1048577 bytes", "more than a scene file may have (1048576, 1 MiB)");
+}
+
 /* ---- syntax ----------------------------------------------------------- */
 
 static void test_unclosed_section_is_a_syntax_error(void **state)
@@ -576,6 +701,102 @@ static void test_text_without_equals_is_a_syntax_error(void **state)
     assert_int_equal(load_tmp("text.ini", path, sizeof path), -1);
     place(where, sizeof where, path, 5);
     assert_message_has(where, "syntax");
+}
+
+/* libinih ignores what follows the ] of a section line: a key written there
+ * would be lost and the base value would run. */
+static void test_text_after_a_section_line_is_refused(void **state)
+{
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    (void)state;
+    write_file("after.ini", "[scene]\nbase = mssp2023.ini\n"
+                            "[excitation] frequency = 200\n"  /* 3 */
+                            "acceleration = 14\n[run]\ns0 = 0.3\nt_end = 1\n");
+    assert_int_equal(load_tmp("after.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 3);
+    assert_message_has(where, "text after [excitation]", "frequency = 200");
+    write_file("afterx.ini", "[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\n"
+                             "acceleration = 14\n[run]x\ns0 = 0.3\nt_end = 1\n");
+    assert_int_equal(load_tmp("afterx.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 6);
+    assert_message_has(where, "text after [run]", "\"x\"");
+}
+
+/* a ; comment may follow, as after a value */
+static void test_comment_after_a_section_line_is_accepted(void **state)
+{
+    char path[SCENE_PATH];
+    (void)state;
+    write_file("sectioncomment.ini", "[scene]   ; what it is\nbase = mssp2023.ini\n[excitation];x\n"
+                                     "frequency = 124\nacceleration = 14\n[run]\t\ns0 = 0.3\nt_end = 1\n");
+    if (load_tmp("sectioncomment.ini", path, sizeof path) != 0) {
+        print_error("%s\n", message);
+        fail();
+    }
+}
+
+/* [ run ] would be a section named " run ", [] no section at all */
+static void test_section_name_must_be_a_plain_name(void **state)
+{
+    static const char *const bad[] = { "[ run ]", "[run ]", "[]", "[run.x]", "[r\xc3\xbcn]" };
+    char text[256];
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    size_t i;
+
+    (void)state;
+    for (i = 0; i < sizeof bad / sizeof bad[0]; ++i) {
+        snprintf(text, sizeof text, "[scene]\nbase = mssp2023.ini\n%s\ns0 = 0.3\n", bad[i]);
+        write_file("badsection.ini", text);
+        assert_int_equal(load_tmp("badsection.ini", path, sizeof path), -1);
+        place(where, sizeof where, path, 3);
+        assert_message_has(where, "section");
+    }
+}
+
+/* A file saved with classic Mac line ends is one line to a reader that
+ * splits at LF: libinih would read "[scene]" and drop the rest. */
+static void test_cr_only_line_ends_are_refused(void **state)
+{
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    (void)state;
+    write_file("mac.ini", "[scene]\rbase = mssp2023.ini\r[excitation]\rfrequency = 124\r"
+                          "acceleration = 14\r[run]\rs0 = 0.3\rt_end = 1\r");
+    assert_int_equal(load_tmp("mac.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 1);
+    assert_message_has(where, "carriage return without a line feed");
+    /* one stray CR inside a line */
+    write_file("straycr.ini", "[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\r200\n");
+    assert_int_equal(load_tmp("straycr.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 4);
+    assert_message_has(where, "carriage return");
+}
+
+static void test_crlf_line_ends_and_bom_are_accepted(void **state)
+{
+    char path[SCENE_PATH];
+    (void)state;
+    write_file("crlf.ini", "\xEF\xBB\xBF[scene]\r\nbase = mssp2023.ini\r\n[excitation]\r\nfrequency = 124\r\n"
+                           "acceleration = 14\r\n[run]\r\ns0 = 0.3\r\nt_end = 1\r\n");
+    if (load_tmp("crlf.ini", path, sizeof path) != 0) {
+        print_error("%s\n", message);
+        fail();
+    }
+    assert_close("frequency", read_scene.params.frequency, 124.0, 0.0, 0.0);
+    assert_close("t_end", read_scene.params.t_end, 1.0, 0.0, 0.0);
+}
+
+static void test_control_character_is_refused(void **state)
+{
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    (void)state;
+    write_file("control.ini", "[scene]\nbase = mssp2023.ini\nname = a\x1b[2Jb\n");
+    assert_int_equal(load_tmp("control.ini", path, sizeof path), -1);
+    place(where, sizeof where, path, 3);
+    assert_message_has(where, "control character 0x1b");
 }
 
 /* inih reads lines of at most ini_max_line - 3 characters; a longer one
@@ -636,6 +857,7 @@ static void test_dt_above_explicit_limit_is_refused(void **state)
 {
     char where[SCENE_PATH + 16];
     char allowed[64];
+    char limit[40];
 
     (void)state;
     assert_int_equal(load_field("numerics", "dt", "1e-4"), 0);
@@ -644,7 +866,9 @@ static void test_dt_above_explicit_limit_is_refused(void **state)
     assert_int_equal(scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message), -1);
     assert_int_equal(scene_derived.modes.n, 5);
     /* omega_5 = 2 pi 3500 Hz: 2 / omega_5 = 9.09e-5 s */
-    snprintf(allowed, sizeof allowed, "dt < %.4g s", 2.0 / scene_derived.modes.omega[4]);
+    bound_text(2.0 / scene_derived.modes.omega[4], 1, limit, sizeof limit);
+    snprintf(allowed, sizeof allowed, "dt < %s s", limit);
+    assert_true(strtod(limit, NULL) <= 2.0 / scene_derived.modes.omega[4]);
     assert_close("2 / omega_max", 2.0 / scene_derived.modes.omega[4], 9.094e-5, 0.0, 1e-3);
     snprintf(where, sizeof where, "%s:%d", field_path, FIELD_LINE);
     assert_message_has(where, "[numerics] dt", "explicit limit", allowed);
@@ -658,19 +882,158 @@ static void test_dt_below_explicit_limit_builds(void **state)
     assert_close("core dt", core_scene.dt, 9e-5, 0.0, 2.0 * SUPPORT_EPS);
 }
 
+/* "allowed: [LOW, HIGH]" of message into low, high; fails if absent. */
+static void allowed_range(double *low, double *high)
+{
+    const char *range = strstr(message, "allowed: [");
+    char *end;
+
+    assert_non_null(range);
+    *low = strtod(range + strlen("allowed: ["), &end);
+    assert_true(end[0] == ',' && end[1] == ' ');
+    *high = strtod(end + 2, &end);
+    assert_true(*end == ']');
+}
+
+/* s0 = text (as the user would type it) must build. */
+static void assert_start_accepted(const char *text)
+{
+    assert_int_equal(scene_set(&read_scene, "run", "s0", text, "--s0", message, sizeof message), 0);
+    message[0] = '\0';
+    if (scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message) != 0) {
+        print_error("s0 = %s, an end of the printed range, refused: %s\n", text, message);
+        fail();
+    }
+}
+
 static void test_free_start_inside_a_clamp_is_refused(void **state)
 {
     char where[SCENE_PATH + 16];
-    char allowed[64];
     const double low = 0.5 * 10e-3 / 0.140; /* B/2 / L of mssp2023 */
+    double printed_low, printed_high;
+    char text[40];
 
     (void)state;
     assert_int_equal(load_field("run", "s0", "0.01"), 0);
     message[0] = '\0';
     assert_int_equal(scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message), -1);
     snprintf(where, sizeof where, "%s:%d", field_path, FIELD_LINE);
-    snprintf(allowed, sizeof allowed, "[%.6g, %.6g]", low, 1.0 - low);
-    assert_message_has(where, "[run] s0", "clamp", allowed);
+    assert_message_has(where, "[run] s0", "clamp", "allowed: [0.0357143, 0.9642857]");
+    allowed_range(&printed_low, &printed_high);
+    assert_close("low end", printed_low, low, 0.0, 1e-6);
+    assert_close("high end", printed_high, 1.0 - low, 0.0, 1e-6);
+    /* each printed end, typed back, starts (%g printed 0.964286, outside) */
+    snprintf(text, sizeof text, "%.17g", printed_low);
+    assert_start_accepted(text);
+    snprintf(text, sizeof text, "%.17g", printed_high);
+    assert_start_accepted(text);
+}
+
+/* A slot a hair narrower than the beam: the ends of the start range differ
+ * in the 7th digit, where %.6g printed "[0.5, 0.5]". */
+static void test_start_range_ends_are_told_apart(void **state)
+{
+    double printed_low, printed_high;
+    char low_text[40], high_text[40];
+
+    (void)state;
+    assert_int_equal(load_field("slider", "slot_width", "0.13999994"), 0);
+    message[0] = '\0';
+    assert_int_equal(scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message), -1);
+    assert_message_has("[run] s0", "clamp");
+    allowed_range(&printed_low, &printed_high);
+    assert_true(printed_low < printed_high);
+    assert_true(printed_low > 0.4999 && printed_high < 0.5001);
+    snprintf(low_text, sizeof low_text, "%.17g", printed_low);
+    snprintf(high_text, sizeof high_text, "%.17g", printed_high);
+    assert_start_accepted(low_text);
+    assert_start_accepted(high_text);
+}
+
+/* The largest count of significant digits of a number in message. */
+static int most_digits_in_message(void)
+{
+    const char *c = message;
+    int most = 0;
+
+    while (*c) {
+        int digits = 0;
+        int leading = 1;
+        if (!isdigit((unsigned char)*c)) {
+            ++c;
+            continue;
+        }
+        for (; isdigit((unsigned char)*c) || *c == '.'; ++c) {
+            if (*c == '.' || (leading && *c == '0'))
+                continue;
+            leading = 0;
+            ++digits;
+        }
+        if (digits > most)
+            most = digits;
+    }
+    return most;
+}
+
+/* Adversarial values used to print ranges and limits with %f (150 digits
+ * for the frequency of a thick beam) or %g (ends that read alike). */
+static void test_range_texts_have_at_most_17_digits(void **state)
+{
+    static const struct { const char *section, *key, *value; } cases[] = {
+        { "beam", "youngs_modulus", "1e200" },
+        { "beam", "youngs_modulus", "1e30" },
+        { "beam", "thickness", "1e100" },
+        { "beam", "density", "1e-200" },
+        { "excitation", "frequency", "1e300" },
+        { "excitation", "frequency", "1.7e308" },
+        { "numerics", "dt", "1e300" },
+        { "slider", "slot_width", "0.13999999999999" },
+        { "slider", "slot_width", "0.14000000000001" },
+    };
+    size_t i;
+
+    (void)state;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        int status = load_field(cases[i].section, cases[i].key, cases[i].value);
+        if (status == 0) {
+            message[0] = '\0';
+            status = scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message);
+        }
+        if (status == 0 || most_digits_in_message() > 17) {
+            print_error("[%s] %s = %s: %s\n", cases[i].section, cases[i].key, cases[i].value,
+                        status == 0 ? "accepted" : message);
+            fail();
+        }
+    }
+}
+
+static void test_bound_texts_stay_on_their_side(void **state)
+{
+    static const double values[] = { 0.9642857142857143, 0.03571428571428571, 1.0 / 3.0, 2.0 / 3.0,
+                                     9.094372e-05, 1e-300, 1.7976931348623157e308, 4.9e-324, 0.5, 100000 };
+    char low[40], high[40], text[40];
+    size_t i;
+
+    (void)state;
+    for (i = 0; i < sizeof values / sizeof values[0]; ++i) {
+        bound_text(values[i], -1, text, sizeof text);
+        assert_true(strtod(text, NULL) >= values[i]);
+        bound_text(values[i], 1, text, sizeof text);
+        assert_true(strtod(text, NULL) <= values[i]);
+        assert_true(strlen(text) <= 24);
+    }
+    bound_text(0.5, 1, text, sizeof text);
+    assert_string_equal(text, "0.5");
+    range_ends_text(0.49999999, 0.50000001, low, high, sizeof low);
+    assert_string_not_equal(low, high);
+    assert_true(strtod(low, NULL) >= 0.49999999 && strtod(high, NULL) <= 0.50000001);
+    range_ends_text(0.0, HUGE_VAL, low, high, sizeof low);
+    assert_string_equal(low, "0");
+    assert_string_equal(high, "inf");
+    range_ends_text(1.0, nextafter(1.0, 2.0), low, high, sizeof low);
+    assert_string_not_equal(low, high);
+    values_text(0.14, 0.13999999999999, low, high, sizeof low);
+    assert_string_not_equal(low, high);
 }
 
 static void test_pcs_start_inside_a_clamp_builds(void **state)
@@ -693,6 +1056,171 @@ static void test_slot_as_wide_as_the_beam_is_refused(void **state)
     assert_message_has(where, "[slider] slot_width", "[beam] length");
 }
 
+/* ---- extreme values: derived quantities out of their number range ----- */
+
+/* Each value is in its field's range, but a quantity derived from it
+ * overflows or underflows (found with a script trying tiny and huge values
+ * of every field, docs/robustness.md). The refusal must name the field where
+ * it was set, with a range, and not blame another field: a denormal
+ * thickness used to give NaN frequencies and a message about dt. */
+static void test_extreme_values_are_blamed_on_their_field(void **state)
+{
+    static const struct { const char *section, *key, *value; } cases[] = {
+        { "beam", "thickness", "1e-320" },      /* the denormal of the report: NaN modes */
+        { "beam", "thickness", "1.7e308" },
+        { "beam", "length", "1e-320" },
+        { "beam", "length", "1e300" },
+        { "beam", "density", "1e-320" },
+        { "beam", "youngs_modulus", "1e-320" },
+        { "beam", "mass", "1e-320" },
+        { "beam", "mass", "1.7e308" },
+        { "clamps", "rotational_stiffness", "1.7e308" },
+        { "slider", "mass", "1e-320" },
+        { "slider", "inertia", "1e-320" },
+        { "slider", "slot_width", "1e-320" },
+        { "slider", "com_offset", "1.7e308" },
+        { "excitation", "frequency", "1e-320" },
+        { "excitation", "acceleration", "1.7e308" },
+        { "numerics", "dt", "1e-320" },
+    };
+    char where[SCENE_PATH + 16];
+    char field[96];
+    size_t i;
+
+    (void)state;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        int status = load_field(cases[i].section, cases[i].key, cases[i].value);
+        if (status == 0) {
+            message[0] = '\0';
+            status = scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message);
+        }
+        snprintf(where, sizeof where, "%s:%d: ", field_path, FIELD_LINE);
+        snprintf(field, sizeof field, "[%s] %s = ", cases[i].section, cases[i].key);
+        if (status == 0 || strncmp(message, where, strlen(where)) || !strstr(message, field)
+            || !strstr(message, "allowed") || strstr(message, "nan") || strstr(message, "inf Hz")
+            || strstr(message, "explicit limit")) {
+            print_error("[%s] %s = %s: %s\n", cases[i].section, cases[i].key, cases[i].value,
+                        status == 0 ? "accepted" : message);
+            fail();
+        }
+    }
+}
+
+/* The range a message gives for a field: a value at either end passes the
+ * checks of extreme values (the other fields as set). */
+static void test_range_of_an_extreme_field_is_one_that_passes(void **state)
+{
+    double low, high;
+    char text[40];
+
+    (void)state;
+    assert_int_equal(load_field("beam", "thickness", "1e-320"), 0);
+    assert_int_equal(scene_limits_range(&read_scene, "beam", "thickness", &low, &high), 0);
+    assert_true(low > 1e-320 && low < 1e-3 && high > 1e-3);
+    message[0] = '\0';
+    assert_int_equal(scene_limits_check(&read_scene, message, sizeof message), -1);
+    bound_text(low, -1, text, sizeof text);
+    assert_message_has("[beam] thickness = ", text);
+    assert_int_equal(scene_set(&read_scene, "beam", "thickness", text, "--h", message, sizeof message), 0);
+    if (scene_limits_check(&read_scene, message, sizeof message) != 0) {
+        print_error("thickness = %s, the low end of its range: %s\n", text, message);
+        fail();
+    }
+    bound_text(high, 1, text, sizeof text);
+    assert_int_equal(scene_set(&read_scene, "beam", "thickness", text, "--h", message, sizeof message), 0);
+    if (scene_limits_check(&read_scene, message, sizeof message) != 0) {
+        print_error("thickness = %s, the high end of its range: %s\n", text, message);
+        fail();
+    }
+}
+
+/* Values that overflow only together: the message names each input with
+ * where it was set and its range, and the range's end builds. It used to
+ * say "the core refuses the scene ... (field base_accel/...)" with no line
+ * and no range. */
+static void test_inputs_overflowing_together_are_each_named_with_a_range(void **state)
+{
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    const char *acceleration;
+    char text[40];
+
+    /* each within what bs_real holds, a / (2 pi f)^2 not */
+    const char *const scene = BS_REAL_FLOAT
+        ? "[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 1e-6\nacceleration = 1e30\n[run]\ns0 = 0.3\nt_end = 1\n"
+        : "[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 1e-5\nacceleration = 1e300\n[run]\ns0 = 0.3\nt_end = 1\n";
+    const char *const given = BS_REAL_FLOAT ? "[excitation] acceleration = 1e+30 m/s^2 ("
+                                            : "[excitation] acceleration = 1e+300 m/s^2 (";
+
+    (void)state;
+    write_file("together.ini", scene); /* frequency on line 4, acceleration on line 5 */
+    assert_int_equal(load_tmp("together.ini", path, sizeof path), 0);
+    message[0] = '\0';
+    assert_int_equal(scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message), -1);
+    place(where, sizeof where, path, 5);
+    assert_message_has(where, "base displacement", given, "[excitation] frequency = ");
+    snprintf(where, sizeof where, "%s:4): [", path);
+    assert_message_has(where);
+    acceleration = strstr(message, given);
+    acceleration = strstr(acceleration, "): [0, ");
+    assert_non_null(acceleration);
+    snprintf(text, sizeof text, "%.*s", (int)strcspn(acceleration + 7, "]"), acceleration + 7);
+    assert_int_equal(scene_set(&read_scene, "excitation", "acceleration", text, "--a", message, sizeof message), 0);
+    message[0] = '\0';
+    if (scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message) != 0) {
+        print_error("acceleration = %s, the end of its range: %s\n", text, message);
+        fail();
+    }
+}
+
+/* A large offset d next to a small play: rounded to bs_real, the corners
+ * R/2 + d and -R/2 + d lose the play (the core refused it as "corner"). */
+static void test_offset_that_rounds_the_play_away_is_refused_with_a_range(void **state)
+{
+    char where[SCENE_PATH + 16];
+    const char *range;
+    double low, high;
+    char text[40];
+
+    (void)state;
+    assert_int_equal(load_field("slider", "com_offset", "1e13"), 0);
+    message[0] = '\0';
+    assert_int_equal(scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message), -1);
+    snprintf(where, sizeof where, "%s:%d:", field_path, FIELD_LINE);
+    assert_message_has(where, "[slider] com_offset", "play", "allowed: [");
+    range = strstr(message, "allowed: [") + strlen("allowed: [");
+    low = strtod(range, (char **)&range);
+    assert_true(range[0] == ',');
+    high = strtod(range + 2, NULL);
+    assert_true(low == -high && high > 0.14);
+    snprintf(text, sizeof text, "%.17g", high);
+    assert_int_equal(scene_set(&read_scene, "slider", "com_offset", text, "--d", message, sizeof message), 0);
+    message[0] = '\0';
+    if (scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message) != 0) {
+        print_error("com_offset = %s, the end of its range: %s\n", text, message);
+        fail();
+    }
+}
+
+/* A slot a hair narrower than the beam passes the check in double; in float
+ * the clamp stops B/2 and L - B/2 round together (the core refused it as
+ * "stop_min/stop_max", naming no line). */
+static void test_slot_that_rounds_to_the_beam_length_is_refused(void **state)
+{
+    char where[SCENE_PATH + 16];
+
+    (void)state;
+    if (!BS_REAL_FLOAT) {
+        skip();
+        return;
+    }
+    assert_int_equal(load_field("slider", "slot_width", "0.1399999995"), 0);
+    message[0] = '\0';
+    assert_int_equal(scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message), -1);
+    snprintf(where, sizeof where, "%s:%d:", field_path, FIELD_LINE);
+    assert_message_has(where, "[slider] slot_width", "[beam] length", "allowed: slot_width < 0.13999998");
+}
+
 /* ---- scene_set: command-line overrides -------------------------------- */
 
 static void test_override_applies_a_valid_value(void **state)
@@ -706,12 +1234,61 @@ static void test_override_applies_a_valid_value(void **state)
     assert_close("dt", read_scene.params.dt, 1e-5, 0.0, 1e-15);
     assert_string_equal(scene_where(&read_scene, "numerics", "dt", where, sizeof where), "--dt");
     files = read_scene.file_count;
-    /* the same option again replaces the value and reuses its entry */
+    /* the same option again replaces the value */
     assert_int_equal(scene_set(&read_scene, "numerics", "dt", "1.5e-5", "--dt", message, sizeof message), 0);
     assert_close("dt", read_scene.params.dt, 1.5e-5, 0.0, 1e-15);
     assert_int_equal(read_scene.file_count, files);
     support_build(&read_scene, &core_scene, &scene_derived);
     assert_close("core dt", core_scene.dt, 1.5e-5, 0.0, 2.0 * SUPPORT_EPS);
+}
+
+/* Options used to be recorded as extra "files": a long enough command line
+ * (or one option spelt several ways) failed with "too many nested base
+ * files". Options and the base chain now have separate limits. */
+static void test_options_leave_the_base_file_slots_alone(void **state)
+{
+    static const char *const spellings[] = { "--dt", "--time-step", "-dt", "--DT", "--dt=", "--step",
+                                              "--h", "--delta-t", "--dt2", "--dt3", "--dt4", "--dt5" };
+    char name[32];
+    char text[160];
+    char path[SCENE_PATH];
+    char where[SCENE_PATH + 16];
+    int i;
+
+    (void)state;
+    /* a chain of SCENE_MAX_FILES files: chain1.ini .. chainN.ini, the last on mssp2023.ini */
+    for (i = 1; i < SCENE_MAX_FILES; ++i) {
+        snprintf(name, sizeof name, "chain%d.ini", i);
+        if (i + 1 < SCENE_MAX_FILES)
+            snprintf(text, sizeof text, "[scene]\nbase = chain%d.ini\n", i + 1);
+        else
+            snprintf(text, sizeof text, "[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\n"
+                                        "acceleration = 14\n[run]\ns0 = 0.3\nt_end = 1\n");
+        write_file(name, text);
+    }
+    if (load_tmp("chain1.ini", path, sizeof path) != 0) {
+        print_error("%s\n", message);
+        fail();
+    }
+    assert_int_equal(read_scene.file_count, SCENE_MAX_FILES);
+    for (i = 0; i < (int)(sizeof spellings / sizeof spellings[0]); ++i) {
+        snprintf(text, sizeof text, "%d.5e-5", 1 + i % 3);
+        if (scene_set(&read_scene, "numerics", "dt", text, spellings[i], message, sizeof message) != 0) {
+            print_error("option %d (%s): %s\n", i + 1, spellings[i], message);
+            fail();
+        }
+        assert_string_equal(scene_where(&read_scene, "numerics", "dt", where, sizeof where), spellings[i]);
+    }
+    assert_int_equal(scene_set(&read_scene, "run", "t_end", "0.5", "--t-end", message, sizeof message), 0);
+    assert_int_equal(read_scene.file_count, SCENE_MAX_FILES);
+    /* the files keep their places in messages */
+    tmp_path(path, sizeof path, "mssp2023.ini");
+    assert_non_null(strstr(scene_where(&read_scene, "beam", "length", where, sizeof where), path));
+    support_build(&read_scene, &core_scene, &scene_derived);
+    /* the chain limit itself is unchanged: one file more is refused */
+    write_file("chain0.ini", "[scene]\nbase = chain1.ini\n");
+    assert_int_equal(load_tmp("chain0.ini", path, sizeof path), -1);
+    assert_message_has("too many nested base files");
 }
 
 static void test_override_refuses_a_bad_value_naming_the_option(void **state)
@@ -755,9 +1332,11 @@ int main(void)
         cmocka_unit_test(test_fig6_has_the_section8_values),
         cmocka_unit_test(test_fig6_1mode_has_one_mode_and_fig6_values),
         cmocka_unit_test(test_name_defaults_to_file_name_without_ini),
+        cmocka_unit_test(test_names_must_be_utf8_and_whole),
         cmocka_unit_test(test_unknown_section_is_refused),
         cmocka_unit_test(test_unknown_key_is_refused),
         cmocka_unit_test(test_key_outside_a_section_is_refused),
+        cmocka_unit_test(test_key_without_a_name_is_refused),
         cmocka_unit_test(test_key_set_twice_names_both_lines),
         cmocka_unit_test(test_base_set_twice_names_both_lines),
         cmocka_unit_test(test_file_value_overrides_its_base),
@@ -771,16 +1350,34 @@ int main(void)
         cmocka_unit_test(test_file_that_does_not_exist_is_named),
         cmocka_unit_test(test_base_cycle_is_refused),
         cmocka_unit_test(test_error_in_the_base_names_the_base),
+        cmocka_unit_test(test_base_that_is_not_a_regular_file_is_refused),
+        cmocka_unit_test(test_folder_as_scene_is_refused),
+        cmocka_unit_test(test_scene_file_over_the_size_limit_is_refused),
         cmocka_unit_test(test_unclosed_section_is_a_syntax_error),
         cmocka_unit_test(test_text_without_equals_is_a_syntax_error),
+        cmocka_unit_test(test_text_after_a_section_line_is_refused),
+        cmocka_unit_test(test_comment_after_a_section_line_is_accepted),
+        cmocka_unit_test(test_section_name_must_be_a_plain_name),
+        cmocka_unit_test(test_cr_only_line_ends_are_refused),
+        cmocka_unit_test(test_crlf_line_ends_and_bom_are_accepted),
+        cmocka_unit_test(test_control_character_is_refused),
         cmocka_unit_test(test_over_long_line_is_refused_not_split),
         cmocka_unit_test(test_line_at_the_length_limit_is_accepted),
         cmocka_unit_test(test_dt_above_explicit_limit_is_refused),
         cmocka_unit_test(test_dt_below_explicit_limit_builds),
         cmocka_unit_test(test_free_start_inside_a_clamp_is_refused),
+        cmocka_unit_test(test_start_range_ends_are_told_apart),
+        cmocka_unit_test(test_range_texts_have_at_most_17_digits),
+        cmocka_unit_test(test_bound_texts_stay_on_their_side),
         cmocka_unit_test(test_pcs_start_inside_a_clamp_builds),
         cmocka_unit_test(test_slot_as_wide_as_the_beam_is_refused),
+        cmocka_unit_test(test_extreme_values_are_blamed_on_their_field),
+        cmocka_unit_test(test_range_of_an_extreme_field_is_one_that_passes),
+        cmocka_unit_test(test_inputs_overflowing_together_are_each_named_with_a_range),
+        cmocka_unit_test(test_offset_that_rounds_the_play_away_is_refused_with_a_range),
+        cmocka_unit_test(test_slot_that_rounds_to_the_beam_length_is_refused),
         cmocka_unit_test(test_override_applies_a_valid_value),
+        cmocka_unit_test(test_options_leave_the_base_file_slots_alone),
         cmocka_unit_test(test_override_refuses_a_bad_value_naming_the_option),
         cmocka_unit_test(test_override_beyond_explicit_limit_names_the_option),
     };

@@ -3,6 +3,7 @@
 #define CLI_H
 
 #include <stdio.h>
+#include "scene_ini.h"
 
 /* Exit codes: 0 success, 1 the work failed (run diverged, output not
  * written), 2 bad usage or bad input. */
@@ -16,11 +17,27 @@ int cli_run(int argc, char **argv);
 /* Prints "beamslider: error: ..." to stderr. */
 void cli_error(const char *format, ...);
 
-/* Opens PATH for writing (*file = NULL and 0 when PATH is NULL); -1 after
- * reporting a failure. */
-int cli_open_output(const char *path, FILE **file);
+/* One output file of a command: the option that names it and its path
+ * (NULL: not asked for); file is set by cli_open_outputs. */
+typedef struct cli_output {
+    const char *option;
+    const char *path;
+    FILE *file;
+} cli_output;
 
-/* Closes an output opened by cli_open_output; -1 after reporting that its own
+#define CLI_MAX_OUTPUTS 4
+
+/* Opens every output asked for, or none (cli_output.c says how). Returns
+ * CLI_OK; CLI_USAGE after reporting that two outputs are one file, or that
+ * an output is the scene file, one of its bases or where standard output
+ * goes; CLI_FAILED after reporting an output that cannot be opened (then no
+ * file was truncated, and none was left behind). */
+int cli_open_outputs(cli_output *outputs, int count, const scene_file *scene);
+
+/* Closes the outputs that are open, without checking them (on a failure). */
+void cli_close_outputs(cli_output *outputs, int count);
+
+/* Closes an output opened by cli_open_outputs; -1 after reporting that its own
  * writes failed (write_errno: the errno of the failed write, if known). */
 int cli_close_output(const char *path, FILE *file, int write_errno);
 

@@ -7,6 +7,7 @@
 #include "cli.h"
 #include "run.h"
 #include "scene_build.h"
+#include "summary.h"
 
 typedef struct run_cli {
     const char *scene_path;
@@ -75,27 +76,7 @@ static int parse_options(int argc, char **argv, run_cli *cli, scene_file *file)
             return -1;
         }
     }
-    if (cli->out_path && cli->periods_path && !strcmp(cli->out_path, cli->periods_path)) {
-        cli_error("--out and --periods both name %s: each needs its own file", cli->out_path);
-        return -1;
-    }
     return 0;
-}
-
-static void print_summary(const scene_file *file, const bs_scene *scene, const run_result *r)
-{
-    const scene_params *p = &file->params;
-    printf("{\"scene\":\"%s\",\"model\":\"%s\",\"precision\":\"%s\",\"modes\":%d,\"dt\":%g,"
-           "\"status\":\"%s\",\"t_end\":%.9g,\"steps\":%llu,\"s0\":%.9g,\"s_final\":%.9g,"
-           "\"s_min\":%.9g,\"t_s_min\":%.6f,\"amp_final_h\":%.6g,\"amp_periods\":%d,"
-           "\"wall_s\":%.4g,\"steps_per_s\":%.4g,\"max_pgs_iters\":%d,\"unconverged_steps\":%llu,"
-           "\"contact_steps\":%llu,\"mean_pgs_iters\":%.4g,\"hash\":\"%08x\"}\n",
-           p->name, p->model == BS_MODEL_PCS ? "pcs" : "free", BS_REAL_NAME, scene->n_modes, p->dt,
-           r->write_failed ? "write error" : bs_status_text(r->status), r->t, (unsigned long long)r->steps,
-           p->s0, r->s_final, r->s_min, r->t_s_min, r->amp_final_h, r->amp_periods, r->wall_s,
-           r->wall_s > 0.0 ? (double)r->steps / r->wall_s : 0.0, r->max_pgs_sweeps,
-           (unsigned long long)r->unconverged_steps, (unsigned long long)r->contact_steps,
-           r->contact_steps ? (double)r->total_sweeps / (double)r->contact_steps : 0.0, r->hash);
 }
 
 /* Closes an output; reports and returns -1 if it misses anything: its own
@@ -122,8 +103,9 @@ int cli_run(int argc, char **argv)
     run_options options;
     run_result result;
     char err[1024];
+    cli_output outputs[2];
     FILE *csv, *periods;
-    int failed;
+    int failed, status;
 
     if (parse_options(argc, argv, &cli, &file) != 0)
         return CLI_USAGE;
@@ -132,13 +114,14 @@ int cli_run(int argc, char **argv)
         return CLI_USAGE;
     }
     /* outputs are opened only once the input is known to be good */
-    if (cli_open_output(cli.out_path, &csv) != 0)
-        return CLI_FAILED;
-    if (cli_open_output(cli.periods_path, &periods) != 0) {
-        if (csv)
-            fclose(csv);
-        return CLI_FAILED;
-    }
+    outputs[0].option = "--out";
+    outputs[0].path = cli.out_path;
+    outputs[1].option = "--periods";
+    outputs[1].path = cli.periods_path;
+    if ((status = cli_open_outputs(outputs, 2, &file)) != CLI_OK)
+        return status;
+    csv = outputs[0].file;
+    periods = outputs[1].file;
     options.model = (bs_model)file.params.model;
     options.s0 = file.params.s0;
     options.t_end = file.params.t_end;
@@ -159,6 +142,9 @@ int cli_run(int argc, char **argv)
     if (result.status != BS_OK)
         cli_error("%s: stopped at t = %.6f s (step %llu): %s; state and CSV kept up to the last good step",
                   file.params.name, result.t, (unsigned long long)result.steps, bs_status_text(result.status));
-    print_summary(&file, &scene, &result);
+    if (summary_print_run(stdout, &file.params, &scene, &result) != 0) {
+        cli_error("cannot write the summary (out of memory?)");
+        failed = 1;
+    }
     return failed ? CLI_FAILED : CLI_OK;
 }

@@ -8,6 +8,7 @@
 #include <string.h>
 #include "cli.h"
 #include "scene_build.h"
+#include "summary.h"
 #include "sweep.h"
 
 static const char sweep_usage[] =
@@ -198,8 +199,9 @@ int cli_sweep(int argc, char **argv)
     sweep_options options;
     sweep_result r;
     char err[1024];
+    cli_output outputs[2];
     FILE *csv, *trace;
-    int failed, points;
+    int failed, points, status;
 
     if (argc >= 1 && (!strcmp(argv[0], "--help") || !strcmp(argv[0], "-h"))) {
         fputs(sweep_usage, stdout);
@@ -211,12 +213,14 @@ int cli_sweep(int argc, char **argv)
         cli_error("%s", err);
         return CLI_USAGE;
     }
-    if (cli_open_output(cli.out_path, &csv) != 0)
-        return CLI_FAILED;
-    if (cli_open_output(cli.trace_path, &trace) != 0) {
-        fclose(csv);
-        return CLI_FAILED;
-    }
+    outputs[0].option = "--out";
+    outputs[0].path = cli.out_path;
+    outputs[1].option = "--trace";
+    outputs[1].path = cli.trace_path;
+    if ((status = cli_open_outputs(outputs, 2, &file)) != CLI_OK)
+        return status;
+    csv = outputs[0].file;
+    trace = outputs[1].file;
     points = sweep_grid_size(options.from, options.to, options.step);
     options.dt = file.params.dt;
     options.solver = scene_solver(&file.params);
@@ -234,15 +238,9 @@ int cli_sweep(int argc, char **argv)
     if (r.status != BS_OK)
         cli_error("%s: sweep stopped after %d of %d points: %s; the CSV holds the complete points",
                   file.params.name, r.points_done, points, bs_status_text(r.status));
-    printf("{\"scene\":\"%s\",\"command\":\"sweep\",\"dir\":\"%s\",\"precision\":\"%s\",\"modes\":%d,"
-           "\"dt\":%g,\"status\":\"%s\",\"from\":%.9g,\"to\":%.9g,\"step\":%.9g,\"hold\":%d,\"record\":%d,"
-           "\"points\":%d,\"steps\":%llu,\"wall_s\":%.4g,\"steps_per_s\":%.4g,\"max_pgs_iters\":%d,"
-           "\"unconverged_steps\":%llu,\"contact_steps\":%llu,\"mean_pgs_iters\":%.4g}\n",
-           file.params.name, options.down ? "down" : "up", BS_REAL_NAME, scene.n_modes, file.params.dt,
-           r.write_failed ? "write error" : bs_status_text(r.status), options.from, options.to, options.step,
-           options.hold, options.record, r.points_done, (unsigned long long)r.steps, r.wall_s,
-           r.wall_s > 0.0 ? (double)r.steps / r.wall_s : 0.0, r.max_sweeps,
-           (unsigned long long)r.unconverged_steps, (unsigned long long)r.contact_steps,
-           r.contact_steps ? (double)r.total_sweeps / (double)r.contact_steps : 0.0);
+    if (summary_print_sweep(stdout, &file.params, &scene, &options, &r) != 0) {
+        cli_error("cannot write the summary (out of memory?)");
+        failed = 1;
+    }
     return failed ? CLI_FAILED : CLI_OK;
 }

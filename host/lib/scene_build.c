@@ -14,6 +14,7 @@
  *   phase step f_ex dt / 2 * 2^64, rounded once here
  */
 #include "scene_build.h"
+#include "scene_limits.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -147,42 +148,75 @@ void scene_data_round(const scene_data *data, bs_scene *scene)
     BS_SCENE_FIELDS(ROUND_FIELD)
 }
 
-/* Cross-field checks that need derived quantities. */
+/* Cross-field checks that need derived quantities. Bounds are printed with
+ * bound_text: on the allowed side, to as many digits as that takes. */
 static int check_derived(const scene_file *file, const scene_model *model, char *err, size_t size)
 {
     const scene_params *p = &file->params;
     const double omega_max = model->modes.omega[model->modes.n - 1];
     char where[SCENE_PATH + 16];
     char where2[SCENE_PATH + 16];
+    char value[40], limit[40];
 
     if (!(p->slot_width < p->beam.length)) {
-        snprintf(err, size, "%s: [slider] slot_width = %g m must be below [beam] length = %g m (%s)",
-                 scene_where(file, "slider", "slot_width", where, sizeof where), p->slot_width,
-                 p->beam.length, scene_where(file, "beam", "length", where2, sizeof where2));
+        values_text(p->slot_width, p->beam.length, value, limit, sizeof value);
+        snprintf(err, size, "%s: [slider] slot_width = %s m must be below [beam] length = %s m (%s)",
+                 scene_where(file, "slider", "slot_width", where, sizeof where), value, limit,
+                 scene_where(file, "beam", "length", where2, sizeof where2));
         return -1;
     }
     if (!p->implicit && !(omega_max * p->dt < 2.0)) {
+        bound_text(2.0 / omega_max, 1, limit, sizeof limit);
         snprintf(err, size,
                  "%s: [numerics] dt = %g s: omega_max dt = %.4g, above the explicit limit 2 "
-                 "(mode %d, %.1f Hz); allowed: dt < %.4g s, or [numerics] integrator = implicit",
+                 "(mode %d, %.5g Hz); allowed: dt < %s s, or [numerics] integrator = implicit",
                  scene_where(file, "numerics", "dt", where, sizeof where), p->dt, omega_max * p->dt,
-                 model->modes.n, omega_max / (2.0 * 3.14159265358979323846), 2.0 / omega_max);
+                 model->modes.n, omega_max / (2.0 * 3.14159265358979323846), limit);
         return -1;
     }
     if (!(p->frequency * p->dt < 0.5)) {
+        bound_text(0.5 / p->frequency, 1, limit, sizeof limit);
         snprintf(err, size, "%s: [numerics] dt = %g s: fewer than two steps per excitation period "
-                 "(f_ex = %g Hz); allowed: dt < %g s",
-                 scene_where(file, "numerics", "dt", where, sizeof where), p->dt, p->frequency,
-                 0.5 / p->frequency);
+                 "(f_ex = %g Hz); allowed: dt < %s s",
+                 scene_where(file, "numerics", "dt", where, sizeof where), p->dt, p->frequency, limit);
         return -1;
     }
     /* steps are counted exactly in a double: t = n dt */
     if (!(p->t_end / p->dt <= 9007199254740992.0)) {
-        snprintf(err, size, "%s: [run] t_end = %g s is more than 2^53 steps of dt = %g s",
-                 scene_where(file, "run", "t_end", where, sizeof where), p->t_end, p->dt);
+        bound_text(9007199254740992.0 * p->dt, 1, limit, sizeof limit);
+        snprintf(err, size, "%s: [run] t_end = %g s is more than 2^53 steps of dt = %g s; allowed: "
+                 "t_end <= %s s (or a larger dt)",
+                 scene_where(file, "run", "t_end", where, sizeof where), p->t_end, p->dt, limit);
         return -1;
     }
     return 0;
+}
+
+/* x_C = s0 L within the clamp stops, as the core computes it (in bs_real). */
+static int start_inside(const bs_scene *scene, bs_real s0)
+{
+    const bs_real x0 = s0 * scene->length;
+    return x0 >= scene->stop_min && x0 <= scene->stop_max;
+}
+
+static bs_real real_next(bs_real x, bs_real toward)
+{
+#if BS_REAL_FLOAT
+    return nextafterf(x, toward);
+#else
+    return nextafter(x, toward);
+#endif
+}
+
+/* The end of the start range nearest to s (stop_min / L or stop_max / L),
+ * moved in bs_real until the core's own check takes it: every s0 between
+ * the two ends is then a start the core accepts. */
+static double start_range_end(const bs_scene *scene, bs_real s, bs_real inward)
+{
+    int i;
+    for (i = 0; i < 64 && !start_inside(scene, s); ++i)
+        s = real_next(s, inward);
+    return (double)s;
 }
 
 /* The start position, checked as the core checks it: in bs_real, against the
@@ -190,51 +224,171 @@ static int check_derived(const scene_file *file, const scene_model *model, char 
 static int check_start(const scene_file *file, const bs_scene *scene, char *err, size_t size)
 {
     const scene_params *p = &file->params;
-    const bs_real x0 = (bs_real)p->s0 * scene->length;
     char where[SCENE_PATH + 16];
+    char low[40], high[40];
 
-    if (p->model == BS_MODEL_FREE && !(x0 >= scene->stop_min && x0 <= scene->stop_max)) {
+    if (p->model == BS_MODEL_FREE && !start_inside(scene, (bs_real)p->s0)) {
+        range_ends_text(start_range_end(scene, scene->stop_min / scene->length, BS_R(1.0)),
+                        start_range_end(scene, scene->stop_max / scene->length, BS_R(0.0)), low, high,
+                        sizeof low);
         snprintf(err, size, "%s: [run] s0 = %.17g: the slider would start inside a clamp; "
-                 "allowed: [%.6g, %.6g] (slot corners between the clamps)",
-                 scene_where(file, "run", "s0", where, sizeof where), p->s0,
-                 (double)(scene->stop_min / scene->length), (double)(scene->stop_max / scene->length));
+                 "allowed: [%s, %s] (slot corners between the clamps)",
+                 scene_where(file, "run", "s0", where, sizeof where), p->s0, low, high);
         return -1;
     }
     return 0;
 }
 
 /* The INI fields a core scene field is computed from, to point at them when
- * the core refuses a value the host's own checks let through (a product that
- * overflows bs_real, say). */
+ * the core refuses a value the host's own checks let through. */
+#define ORIGIN_INPUTS 8
+#define MODAL_INPUTS { "beam", "length" }, { "beam", "thickness" }, { "beam", "density" }, \
+    { "beam", "youngs_modulus" }, { "beam", "mass" }, { "clamps", "rotational_stiffness" }
 static const struct {
     const char *core_field;
-    const char *inputs;
+    scene_input inputs[ORIGIN_INPUTS]; /* ends at section NULL */
 } origins[] = {
-    { "length", "[beam] length" },
-    { "stop_min/stop_max", "[beam] length, [slider] slot_width" },
-    { "half_thickness", "[beam] thickness" },
-    { "corner", "[beam] thickness, [slider] slot_width, play_ratio, com_offset" },
-    { "com_offset", "[slider] com_offset" },
-    { "com_offset/base_displacement", "[slider] com_offset, [excitation] acceleration, frequency" },
-    { "base_accel", "[excitation] acceleration" },
-    { "base_velocity", "[excitation] acceleration, frequency" },
-    { "base_displacement", "[excitation] acceleration, frequency" },
-    { "phase_step_half", "[excitation] frequency, [numerics] dt" },
-    { "dt", "[numerics] dt" },
-    { "mass_inv", "[slider] mass" },
-    { "inertia_inv", "[slider] mass, inertia, com_offset" },
-    { "gravity", "[environment] gravity, tilt" },
-    { "mu", "[contact] friction" },
-    { "theta", "[numerics] theta" },
-    { NULL, "[beam] and [clamps] (the modal data)" },
+    { "length", { { "beam", "length" } } },
+    { "shape_scale", { { "beam", "length" } } },
+    { "stop_min/stop_max", { { "slider", "slot_width" }, { "beam", "length" } } },
+    { "half_thickness", { { "beam", "thickness" } } },
+    { "corner", { { "slider", "com_offset" }, { "slider", "play_ratio" }, { "beam", "thickness" },
+                  { "slider", "slot_width" } } },
+    { "com_offset", { { "slider", "com_offset" } } },
+    { "com_offset/base_displacement", { { "slider", "com_offset" }, { "excitation", "acceleration" },
+                                        { "excitation", "frequency" } } },
+    { "base_accel", { { "excitation", "acceleration" } } },
+    { "base_velocity", { { "excitation", "acceleration" }, { "excitation", "frequency" } } },
+    { "base_displacement", { { "excitation", "acceleration" }, { "excitation", "frequency" } } },
+    { "phase_step_half", { { "excitation", "frequency" }, { "numerics", "dt" } } },
+    { "dt", { { "numerics", "dt" } } },
+    { "mass_inv", { { "slider", "mass" } } },
+    { "inertia_inv", { { "slider", "inertia" } } },
+    { "gravity", { { "environment", "gravity" }, { "environment", "tilt" } } },
+    { "mu", { { "contact", "friction" } } },
+    { "e_n", { { "contact", "restitution" } } },
+    { "theta", { { "numerics", "theta" } } },
+    { "mode_gain", { { "numerics", "dt" }, { "numerics", "theta" }, MODAL_INPUTS } },
+    { "damping", { { "beam", "damping_ratio" }, MODAL_INPUTS } },
+    { "stretch", { MODAL_INPUTS, { "clamps", "axial_stiffness" } } },
+    { NULL, { MODAL_INPUTS } }, /* omega_sq, gamma, phi_sensor, shape_coef: the modal data */
 };
 
-static const char *core_field_inputs(const char *field)
+static int origin_of(const char *core_field)
 {
     int i;
-    for (i = 0; origins[i].core_field && strcmp(origins[i].core_field, field); ++i)
+    for (i = 0; origins[i].core_field && strcmp(origins[i].core_field, core_field); ++i)
         ;
-    return origins[i].inputs;
+    return i;
+}
+
+static int input_count(const scene_input *inputs)
+{
+    int count;
+    for (count = 0; count < ORIGIN_INPUTS && inputs[count].section; ++count)
+        ;
+    return count;
+}
+
+/* Inputs whose combination overflows a derived quantity, found before
+ * anything is computed from them (scene_limits.c). */
+static int check_extremes(const scene_file *file, char *err, size_t size)
+{
+    return scene_limits_check(file, err, size);
+}
+
+/* The modal results, where they are computed: all finite, frequencies
+ * positive. check_extremes keeps the inputs away from overflow; should a
+ * combination still slip through, its NaN is named here, at its origin, and
+ * not blamed on dt by the explicit-limit check that reads it next. */
+static int check_modal_results(const scene_file *file, const modal_set *modes, char *err, size_t size)
+{
+    static const scene_input inputs[] = { MODAL_INPUTS, { "clamps", "axial_stiffness" } };
+    const int count = (int)(sizeof inputs / sizeof inputs[0]);
+    char where[SCENE_PATH + 16];
+    int k, j;
+    int finite = isfinite(modes->k_axial_total);
+
+    for (k = 0; k < modes->n; ++k) {
+        finite = finite && isfinite(modes->lambda[k]) && isfinite(modes->omega[k]) && modes->omega[k] > 0.0
+                 && isfinite(modes->amplitude[k]) && isfinite(modes->gamma[k]);
+        for (j = 0; j < modes->n; ++j)
+            finite = finite && isfinite(modes->slope_gram[k][j]);
+    }
+    if (finite)
+        return 0;
+    snprintf(err, size, "%s: the modal analysis of these values does not give finite modes (f_1 = %g Hz, "
+             "f_%d = %g Hz): the values are too extreme for double; allowed, each with the others as set: ",
+             scene_limits_blame(file, inputs, count, where, sizeof where),
+             modes->omega[0] / (2.0 * 3.14159265358979323846), modes->n,
+             modes->omega[modes->n - 1] / (2.0 * 3.14159265358979323846));
+    scene_limits_describe(file, inputs, count, err, size);
+    return -1;
+}
+
+/* The slot holds the beam as bs_scene_check sees it: the corner heights
+ * R/2 + d and -R/2 + d, rounded to bs_real, still at least h apart. A large
+ * offset d next to a small play rounds the play away. */
+static int check_slot_rounding(const scene_file *file, const bs_scene *scene, char *err, size_t size)
+{
+    const scene_params *p = &file->params;
+    const double eps = (double)BS_REAL_EPS;
+    const double slot = p->play_ratio * p->beam.thickness;
+    char where[3][SCENE_PATH + 16], low[40], high[40];
+    double largest;
+
+    if (scene->corner[0][1] - scene->corner[1][1]
+            >= BS_R(2.0) * scene->half_thickness * (BS_R(1.0) - BS_R(16.0) * BS_REAL_EPS)
+        && scene->corner[3][1] - scene->corner[2][1]
+            >= BS_R(2.0) * scene->half_thickness * (BS_R(1.0) - BS_R(16.0) * BS_REAL_EPS))
+        return 0;
+    /* a rounding moves a value x by at most eps |x| / 2; counted as eps |x|:
+     * the corners by eps (|d| + R/2) each, their difference by eps R, h by
+     * eps h. Enough room: R (1 - eps) - 2 eps (|d| + R/2) >= h (1 + eps) (1 - 16 eps). */
+    largest = (slot * (1.0 - eps) - p->beam.thickness * (1.0 + eps) * (1.0 - 16.0 * eps)) / (2.0 * eps)
+              - 0.5 * slot;
+    range_ends_text(-largest, largest, low, high, sizeof low);
+    snprintf(err, size, "%s: [slider] com_offset = %g m is too large for the slot height R = play_ratio "
+             "thickness = %g m (%s, %s): rounded to %s, the corners lose the play; allowed: [%s, %s] m, "
+             "or a larger play_ratio", scene_where(file, "slider", "com_offset", where[0], sizeof where[0]),
+             p->com_offset, slot, scene_where(file, "slider", "play_ratio", where[1], sizeof where[1]),
+             scene_where(file, "beam", "thickness", where[2], sizeof where[2]), BS_REAL_NAME, low, high);
+    return -1;
+}
+
+/* The clamp stops B/2 < L - B/2 once rounded to bs_real: a slot a hair
+ * narrower than the beam passes the check in double and not this one. */
+static int check_stop_rounding(const scene_file *file, const bs_scene *scene, char *err, size_t size)
+{
+    const scene_params *p = &file->params;
+    char where[2][SCENE_PATH + 16], value[40], limit[40];
+
+    if (scene->stop_min < scene->stop_max)
+        return 0;
+    values_text(p->slot_width, p->beam.length, value, limit, sizeof value);
+    snprintf(err, size, "%s: [slider] slot_width = %s m must be below [beam] length = %s m (%s) by more "
+             "than %s rounding: ", scene_where(file, "slider", "slot_width", where[0], sizeof where[0]), value,
+             limit, scene_where(file, "beam", "length", where[1], sizeof where[1]), BS_REAL_NAME);
+    bound_text(p->beam.length * (1.0 - (double)BS_REAL_EPS), 1, limit, sizeof limit);
+    snprintf(err + strlen(err), size - strlen(err), "allowed: slot_width < %s m", limit);
+    return -1;
+}
+
+/* The core refuses a scene the host's checks let through: name the core
+ * field, each input it comes from with where it was set and the range it may
+ * take with the others as set. */
+static void report_core_refusal(const scene_file *file, bs_status status, const char *field, char *err,
+                                size_t size)
+{
+    const int origin = origin_of(field);
+    const int count = input_count(origins[origin].inputs);
+    char where[SCENE_PATH + 16];
+
+    snprintf(err, size, "%s: the core refuses the scene: %s (field %s): the values are too extreme for %s; "
+             "allowed, each with the others as set: ",
+             scene_limits_blame(file, origins[origin].inputs, count, where, sizeof where), bs_status_text(status),
+             field, BS_REAL_NAME);
+    scene_limits_describe(file, origins[origin].inputs, count, err, size);
 }
 
 int scene_build(const scene_file *file, bs_scene *scene, scene_model *model, char *err, size_t size)
@@ -244,6 +398,8 @@ int scene_build(const scene_file *file, bs_scene *scene, scene_model *model, cha
     bs_status status;
 
     memset(scene, 0, sizeof *scene);
+    if (check_extremes(file, err, size) != 0)
+        return -1;
     model->kappa = modal_kappa(&p->beam);
     model->width = modal_width(&p->beam);
     if (modal_compute(&p->beam, p->modes, &model->modes) != 0) {
@@ -251,7 +407,7 @@ int scene_build(const scene_file *file, bs_scene *scene, scene_model *model, cha
                  file->files[0]);
         return -1;
     }
-    if (check_derived(file, model, err, size) != 0)
+    if (check_modal_results(file, &model->modes, err, size) != 0 || check_derived(file, model, err, size) != 0)
         return -1;
     if (shape_fit_modes(&model->modes, scene_fit_tolerance(), &model->fit) != 0) {
         snprintf(err, size, "%s: %d modes need more than %d shape pieces for a fit error of %g "
@@ -265,11 +421,11 @@ int scene_build(const scene_file *file, bs_scene *scene, scene_model *model, cha
     compute_numerics(p, &model->data);
     scene_data_set_shapes(&model->data, &model->fit);
     scene_data_round(&model->data, scene);
+    if (check_slot_rounding(file, scene, err, size) != 0 || check_stop_rounding(file, scene, err, size) != 0)
+        return -1;
     status = bs_scene_check(scene, &field);
     if (status != BS_OK) {
-        snprintf(err, size, "%s: the core refuses the scene: %s (field %s, from %s): the values are "
-                 "too extreme for %s", file->files[0], bs_status_text(status), field,
-                 core_field_inputs(field), BS_REAL_FLOAT ? "float" : "double");
+        report_core_refusal(file, status, field, err, size);
         return -1;
     }
     return check_start(file, scene, err, size);

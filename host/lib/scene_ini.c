@@ -1,26 +1,46 @@
 /* scene_ini.c - reading scene files with libinih, every field checked.
  *
  * libinih (Debian's libinih-dev) does the INI syntax. Its handler gets no line
- * number in the Debian build, so the file is fed through a reader that counts
- * lines (and refuses over-long lines instead of letting them be split, and NUL
- * bytes, which would cut a line short unseen). The first error wins and names
- * file, line, field, value and the allowed range.
+ * number in the Debian build, and it never sees section lines, so the file is
+ * fed through a reader that counts lines and refuses, line by line, what
+ * libinih would take silently or misread:
+ *   - an over-long line (libinih would split it) and a NUL byte (it would cut
+ *     the line short);
+ *   - a carriage return not followed by a line feed (classic Mac line ends:
+ *     the whole file would be one line) and other control characters (a text
+ *     file has none; a tab is a space);
+ *   - a section line that is not exactly [name] with a known name, followed
+ *     at most by a ; comment: text after the ] would be ignored;
+ *   - a file larger than SCENE_MAX_BYTES.
+ * Only regular files are read (a FIFO or /dev/zero would never end). Each
+ * file is read twice (for its base, then for its values): errors in the text
+ * itself (the reader's, libinih's syntax errors) are found in the first pass
+ * and so come before errors of values, even at a later line. The first error
+ * wins and names file, line, field, value and the allowed range.
  */
+#define _POSIX_C_SOURCE 200809L /* open, fstat, fcntl, fdopen */
+
 #include "scene_ini.h"
 
+#include <ctype.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <ini.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 typedef struct reader {
     FILE *file;
     int line;
-    int bad_line;     /* line number of the first over-long line or NUL byte, 0 if none */
-    int bad_is_nul;   /* 1: bad_line holds a NUL byte; 0: it is over-long */
-    int read_errno;   /* errno of a failed read (e.g. the path is a folder), 0 if none */
+    long bytes;          /* read so far */
+    int too_big;         /* 1: stopped after SCENE_MAX_BYTES */
+    int bad_line;        /* the first line the reader refuses, 0 if none */
+    char bad_why[320];   /* what is wrong with it */
+    int read_errno;      /* errno of a failed read, 0 if none */
 } reader;
 
 typedef struct parse {
@@ -35,8 +55,114 @@ typedef struct parse {
     int failed;
 } parse;
 
-/* fgets for libinih, by characters: fgets cannot tell a NUL byte (a binary
- * or UTF-16 file) from the end of the line. */
+/* Records the first line the reader refuses (libinih still gets it, but
+ * on_entry takes nothing from that line on). */
+static void refuse_line(reader *in, int line, const char *why)
+{
+    if (in->bad_line)
+        return;
+    in->bad_line = line;
+    snprintf(in->bad_why, sizeof in->bad_why, "%s", why);
+}
+
+/* The byte c of the line being read: a NUL byte, a carriage return without
+ * a line feed, or another control character makes the line bad. */
+static void check_byte(reader *in, int c)
+{
+    char why[96];
+    const int line = in->line + 1;
+
+    if (c == '\0') {
+        refuse_line(in, line, "NUL byte: not a text file (UTF-16? save it as UTF-8)");
+    } else if (c == '\r') {
+        const int next = getc(in->file);
+        if (next != EOF)
+            ungetc(next, in->file);
+        if (next != '\n')
+            refuse_line(in, line, "carriage return without a line feed (classic Mac line ends? "
+                                  "save the file with LF or CRLF line ends)");
+    } else if ((c < 0x20 && c != '\t' && c != '\n') || c == 0x7f) {
+        snprintf(why, sizeof why, "control character 0x%02x: not a text file", (unsigned)c);
+        refuse_line(in, line, why);
+    }
+}
+
+static int is_section_name_char(char c)
+{
+    return isalnum((unsigned char)c) || c == '_';
+}
+
+/* 1 if [section] is a section of the field table. */
+static int section_known(const char *name, size_t length)
+{
+    int i;
+    for (i = 0; scene_fields[i].key; ++i)
+        if (strlen(scene_fields[i].section) == length && !strncmp(scene_fields[i].section, name, length))
+            return 1;
+    return 0;
+}
+
+/* "scene, beam, ...": every section of the field table once, in its order. */
+static void section_list(char *out, size_t size)
+{
+    size_t used = 0;
+    int i, j;
+
+    out[0] = '\0';
+    for (i = 0; scene_fields[i].key && used < size; ++i) {
+        for (j = 0; j < i && strcmp(scene_fields[j].section, scene_fields[i].section); ++j)
+            ;
+        if (j == i)
+            used += (size_t)snprintf(out + used, size - used, "%s%s", used ? ", " : "", scene_fields[i].section);
+    }
+}
+
+/* A line that opens with [ must be [name] with a known name, then nothing
+ * but spaces and a ; comment: libinih ignores whatever follows the ] (a key
+ * written there would be lost), keeps spaces inside the brackets in the name
+ * and takes an empty name as "no section". A line without ] is left to
+ * libinih's syntax error. */
+static void check_section_line(reader *in, const char *text)
+{
+    const char *open = text;
+    const char *close;
+    const char *after;
+    char why[300];
+    char known[160];
+    size_t length;
+
+    if (in->line == 1 && !strncmp(open, "\xEF\xBB\xBF", 3)) /* UTF-8 byte-order mark */
+        open += 3;
+    while (*open == ' ' || *open == '\t')
+        ++open;
+    if (*open != '[' || !(close = strchr(open, ']')))
+        return;
+    length = (size_t)(close - open - 1);
+    for (after = close + 1; *after == ' ' || *after == '\t' || *after == '\r' || *after == '\n'; ++after)
+        ;
+    if (length == 0) {
+        refuse_line(in, in->line, "empty section name []");
+    } else if (strspn(open + 1, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != length) {
+        size_t i;
+        for (i = 0; i < length && is_section_name_char(open[1 + i]); ++i)
+            ;
+        snprintf(why, sizeof why, "section name [%.*s] holds %s; allowed: letters, digits and _, as in [numerics]",
+                 (int)length, open + 1, isspace((unsigned char)open[1 + i]) ? "a space" : "a character other than letters, digits and _");
+        refuse_line(in, in->line, why);
+    } else if (!section_known(open + 1, length)) {
+        section_list(known, sizeof known);
+        snprintf(why, sizeof why, "unknown section [%.*s]; allowed: %s", (int)length, open + 1, known);
+        refuse_line(in, in->line, why);
+    } else if (*after != '\0' && *after != ';') {
+        length = strcspn(after, "\r\n");
+        snprintf(why, sizeof why, "text after [%.*s]: \"%.*s\" (a section line holds only [name] and a ; comment; "
+                 "put each key = value on its own line)", (int)(close - open - 1), open + 1, (int)length, after);
+        refuse_line(in, in->line, why);
+    }
+}
+
+/* fgets for libinih, by characters (fgets cannot tell a NUL byte from the end
+ * of the line), checking each byte and each complete line. */
 static char *read_line(char *str, int num, void *stream)
 {
     reader *in = (reader *)stream;
@@ -45,10 +171,11 @@ static char *read_line(char *str, int num, void *stream)
 
     errno = 0;
     while (length < num - 1 && (c = getc(in->file)) != EOF) {
-        if (c == '\0' && !in->bad_line) {
-            in->bad_line = in->line + 1;
-            in->bad_is_nul = 1;
+        if (++in->bytes > SCENE_MAX_BYTES) { /* a file that grows, or says it is empty (/proc) */
+            in->too_big = 1;
+            return NULL; /* the end of the file, for libinih */
         }
+        check_byte(in, c);
         str[length++] = (char)c;
         if (c == '\n')
             break;
@@ -59,14 +186,53 @@ static char *read_line(char *str, int num, void *stream)
         return NULL;
     str[length] = '\0';
     ++in->line;
-    if (str[length - 1] != '\n' && length == num - 1 && !in->bad_line) {
+    if (str[length - 1] != '\n' && length == num - 1) {
         c = getc(in->file); /* full buffer: over-long unless the file ends here */
         if (c != EOF) {
+            char why[64];
             ungetc(c, in->file);
-            in->bad_line = in->line;
+            snprintf(why, sizeof why, "line longer than %d characters", ini_max_line - 3);
+            refuse_line(in, in->line, why);
+            return str;
         }
     }
+    check_section_line(in, str);
     return str;
+}
+
+/* 1 if text is well-formed UTF-8 (no overlong forms, surrogates or code
+ * points above U+10FFFF): texts end up in the JSON summary, which must be
+ * UTF-8. */
+static int is_utf8(const char *text)
+{
+    static const unsigned long smallest[4] = { 0, 0x80, 0x800, 0x10000 }; /* by continuation bytes */
+    const unsigned char *c = (const unsigned char *)text;
+
+    while (*c) {
+        int more, i;
+        unsigned long code;
+        if (*c < 0x80) {
+            ++c;
+            continue;
+        }
+        if ((*c & 0xE0) == 0xC0)
+            more = 1, code = *c & 0x1Fu;
+        else if ((*c & 0xF0) == 0xE0)
+            more = 2, code = *c & 0x0Fu;
+        else if ((*c & 0xF8) == 0xF0)
+            more = 3, code = *c & 0x07u;
+        else
+            return 0;
+        for (i = 1; i <= more; ++i) {
+            if ((c[i] & 0xC0) != 0x80) /* also stops at the terminating NUL */
+                return 0;
+            code = code << 6 | (c[i] & 0x3Fu);
+        }
+        if (code < smallest[more] || (code >= 0xD800 && code <= 0xDFFF) || code > 0x10FFFF)
+            return 0;
+        c += 1 + more;
+    }
+    return 1;
 }
 
 static int field_index(const char *section, const char *key)
@@ -89,6 +255,10 @@ static int assign(scene_params *params, const field_spec *f, const char *value, 
     if (f->kind == FIELD_TEXT) {
         if (strlen(value) >= SCENE_TEXT) {
             snprintf(why, size, "too long; allowed: %s", range);
+            return -1;
+        }
+        if (!is_utf8(value)) {
+            snprintf(why, size, "not UTF-8 text; allowed: %s (UTF-8)", range);
             return -1;
         }
         strcpy(target, value);
@@ -141,32 +311,55 @@ static int assign(scene_params *params, const field_spec *f, const char *value, 
     return 0;
 }
 
-static int set_field(scene_file *scene, int file, int line, const char *section, const char *key,
-                     const char *value, char *err, size_t err_size)
+/* Sets field [section] key from file (an index into files, line > 0) or
+ * from an option (file = SCENE_BY_OPTION, origin: its name, line 0). */
+static int set_field(scene_file *scene, int file, const char *origin, int line, const char *section,
+                     const char *key, const char *value, char *err, size_t err_size)
 {
     const int i = field_index(section, key);
     char why[192];
 
     if (i < 0) {
-        snprintf(err, err_size, "%s:%d: unknown field [%s] %s", scene->files[file], line, section, key);
+        if (file >= 0)
+            snprintf(err, err_size, "%s:%d: unknown field [%s] %s", origin, line, section, key);
+        else
+            snprintf(err, err_size, "%s: unknown field [%s] %s", origin, section, key);
         return -1;
     }
-    if (scene->set_file[i] == file && line > 0) {
-        snprintf(err, err_size, "%s:%d: [%s] %s set twice (first at line %d)", scene->files[file], line,
-                 section, key, scene->set_line[i]);
+    if (file >= 0 && scene->set_file[i] == file) {
+        snprintf(err, err_size, "%s:%d: [%s] %s set twice (first at line %d)", origin, line, section, key,
+                 scene->set_line[i]);
         return -1;
     }
     if (assign(&scene->params, &scene_fields[i], value, why, sizeof why) != 0) {
-        if (line > 0)
-            snprintf(err, err_size, "%s:%d: [%s] %s = %s: %s", scene->files[file], line, section, key,
-                     value, why);
+        if (file >= 0)
+            snprintf(err, err_size, "%s:%d: [%s] %s = %s: %s", origin, line, section, key, value, why);
         else
-            snprintf(err, err_size, "%s %s: %s", scene->files[file], value, why);
+            snprintf(err, err_size, "%s %s: %s", origin, value, why);
         return -1;
     }
     scene->set_file[i] = file;
     scene->set_line[i] = line;
+    if (file == SCENE_BY_OPTION)
+        strcpy(scene->set_option[i], origin); /* scene_set checked its length */
     return 0;
+}
+
+/* A key before the first section line, or a line "= value" without a key:
+ * 0, or -1 with the error. */
+static int check_entry_shape(parse *p, const char *section, const char *key, const char *value)
+{
+    const char *path = p->scene->files[p->file];
+
+    if (!*key)
+        snprintf(p->err, p->err_size, "%s:%d: no key before the = of \"= %s\" (expected key = value)", path,
+                 p->in->line, value);
+    else if (!*section)
+        snprintf(p->err, p->err_size, "%s:%d: %s = %s comes before any [section] line (each key belongs "
+                 "to a section, such as [numerics] dt)", path, p->in->line, key, value);
+    else
+        return 0;
+    return -1;
 }
 
 static int on_entry(void *user, const char *section, const char *key, const char *value)
@@ -197,27 +390,73 @@ static int on_entry(void *user, const char *section, const char *key, const char
     }
     if (is_base)
         return 1;
-    if (set_field(p->scene, p->file, p->in->line, section, key, value, p->err, p->err_size) != 0) {
+    if (check_entry_shape(p, section, key, value) != 0
+        || set_field(p->scene, p->file, p->scene->files[p->file], p->in->line, section, key, value, p->err,
+                     p->err_size) != 0) {
         p->failed = 1;
         return 0;
     }
     return 1;
 }
 
+static const char *file_kind(mode_t mode)
+{
+    if (S_ISDIR(mode))
+        return "a folder";
+    if (S_ISFIFO(mode))
+        return "a FIFO (named pipe)";
+    if (S_ISCHR(mode))
+        return "a character device";
+    if (S_ISBLK(mode))
+        return "a block device";
+    if (S_ISSOCK(mode))
+        return "a socket";
+    return "not a regular file";
+}
+
+/* Opens a scene or base file for reading: a regular file of at most
+ * SCENE_MAX_BYTES. Opened without blocking, so that a FIFO without a writer
+ * is refused instead of waited for. 0, or -1 with what failed ("open",
+ * "read") in verb and why in why. */
+static int open_scene_file(const char *path, FILE **file, const char **verb, char *why, size_t size)
+{
+    struct stat info;
+    const int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY);
+
+    *file = NULL;
+    *verb = "open";
+    if (fd < 0) {
+        snprintf(why, size, "%s", strerror(errno));
+        return -1;
+    }
+    *verb = "read";
+    if (fstat(fd, &info) != 0)
+        snprintf(why, size, "%s", strerror(errno));
+    else if (!S_ISREG(info.st_mode))
+        snprintf(why, size, "%s, not a regular file", file_kind(info.st_mode));
+    else if (info.st_size > SCENE_MAX_BYTES)
+        snprintf(why, size, "%lld bytes, more than a scene file may have (%ld, 1 MiB)",
+                 (long long)info.st_size, SCENE_MAX_BYTES);
+    else if (fcntl(fd, F_SETFL, 0) != 0 || !(*file = fdopen(fd, "r")))
+        snprintf(why, size, "%s", strerror(errno));
+    else
+        return 0;
+    close(fd);
+    return -1;
+}
+
 /* One pass of libinih over the file; 0 or -1 with err filled. */
 static int run_parser(parse *p)
 {
     const char *path = p->scene->files[p->file];
+    const char *verb;
+    char why[160];
     reader in;
     int result;
 
-    in.file = fopen(path, "r");
-    in.line = 0;
-    in.bad_line = 0;
-    in.bad_is_nul = 0;
-    in.read_errno = 0;
-    if (!in.file) {
-        snprintf(p->err, p->err_size, "%s: cannot open scene file", path);
+    memset(&in, 0, sizeof in);
+    if (open_scene_file(path, &in.file, &verb, why, sizeof why) != 0) {
+        snprintf(p->err, p->err_size, "%s: cannot %s scene file: %s", path, verb, why);
         return -1;
     }
     p->in = &in;
@@ -227,13 +466,13 @@ static int run_parser(parse *p)
         snprintf(p->err, p->err_size, "%s: cannot read scene file: %s", path, strerror(in.read_errno));
         return -1;
     }
+    if (in.too_big) {
+        snprintf(p->err, p->err_size, "%s: cannot read scene file: more than a scene file may have "
+                 "(%ld bytes, 1 MiB)", path, SCENE_MAX_BYTES);
+        return -1;
+    }
     if (in.bad_line && !p->failed && !(result > 0 && result < in.bad_line)) {
-        if (in.bad_is_nul)
-            snprintf(p->err, p->err_size, "%s:%d: NUL byte: not a text file (UTF-16? save it as UTF-8)",
-                     path, in.bad_line);
-        else
-            snprintf(p->err, p->err_size, "%s:%d: line longer than %d characters", path, in.bad_line,
-                     ini_max_line - 3);
+        snprintf(p->err, p->err_size, "%s:%d: %s", path, in.bad_line, in.bad_why);
         return -1;
     }
     if (p->failed)
@@ -246,14 +485,10 @@ static int run_parser(parse *p)
     return 0;
 }
 
-/* reuse: an option given twice reuses its entry; a base file never does, so
- * a cycle of bases runs into SCENE_MAX_FILES instead of recursing forever. */
-static int add_file(scene_file *scene, const char *path, int reuse, char *err, size_t err_size)
+/* A base file is never reused, so a cycle of bases runs into
+ * SCENE_MAX_FILES instead of recursing for ever. */
+static int add_file(scene_file *scene, const char *path, char *err, size_t err_size)
 {
-    int i;
-    for (i = 1; reuse && i < scene->file_count; ++i)
-        if (!strcmp(scene->files[i], path))
-            return i;
     if (scene->file_count >= SCENE_MAX_FILES) {
         snprintf(err, err_size, "%s: too many nested base files (at most %d; a cycle of bases?)", path,
                  SCENE_MAX_FILES);
@@ -270,7 +505,7 @@ static int add_file(scene_file *scene, const char *path, int reuse, char *err, s
 static int load_file(scene_file *scene, const char *path, char *err, size_t err_size)
 {
     parse p;
-    const int file = add_file(scene, path, 0, err, err_size);
+    const int file = add_file(scene, path, err, err_size);
 
     if (file < 0)
         return -1;
@@ -284,6 +519,8 @@ static int load_file(scene_file *scene, const char *path, char *err, size_t err_
         return -1;
     if (p.base[0]) {
         char base_path[SCENE_PATH];
+        const char *verb;
+        char why[160];
         FILE *probe;
         const char *slash = strrchr(path, '/');
         const int folder = slash && p.base[0] != '/' ? (int)(slash - path + 1) : 0;
@@ -291,10 +528,9 @@ static int load_file(scene_file *scene, const char *path, char *err, size_t err_
             snprintf(err, err_size, "%s: [scene] base: path too long", path);
             return -1;
         }
-        probe = fopen(base_path, "r"); /* name the line that asked for it */
-        if (!probe) {
-            snprintf(err, err_size, "%s:%d: [scene] base = %s: cannot open %s", path, p.base_line, p.base,
-                     base_path);
+        if (open_scene_file(base_path, &probe, &verb, why, sizeof why) != 0) { /* name the line that asked for it */
+            snprintf(err, err_size, "%s:%d: [scene] base = %s: cannot %s %s: %s", path, p.base_line, p.base,
+                     verb, base_path, why);
             return -1;
         }
         fclose(probe);
@@ -305,7 +541,9 @@ static int load_file(scene_file *scene, const char *path, char *err, size_t err_
     return run_parser(&p);
 }
 
-static void default_name(scene_file *scene, const char *path)
+/* The file name without its folder and .ini, unless it cannot serve as the
+ * name (too long, not UTF-8): then 0, and a [scene] name must be given. */
+static int default_name(scene_file *scene, const char *path)
 {
     const char *slash = strrchr(path, '/');
     const char *base = slash ? slash + 1 : path;
@@ -313,20 +551,22 @@ static void default_name(scene_file *scene, const char *path)
     if (length > 4 && !strcmp(base + length - 4, ".ini"))
         length -= 4;
     if (length >= SCENE_TEXT)
-        length = SCENE_TEXT - 1;
+        return 0;
     memcpy(scene->params.name, base, length);
     scene->params.name[length] = '\0';
+    return is_utf8(scene->params.name);
 }
 
 int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
 {
     int i;
+    int name_from_path;
 
     memset(scene, 0, sizeof *scene);
     for (i = 0; i < SCENE_MAX_FIELDS; ++i)
-        scene->set_file[i] = -1;
-    ini_allow_multiline = 0; /* an indented line is an error, not a silent continuation */
-    default_name(scene, path);
+        scene->set_file[i] = SCENE_NOT_SET;
+    ini_allow_multiline = 0; /* an indented line without = is an error, not a silent continuation */
+    name_from_path = default_name(scene, path);
     for (i = 0; scene_fields[i].key; ++i) { /* optional fields start at their defaults */
         const field_spec *f = &scene_fields[i];
         char why[160];
@@ -340,11 +580,16 @@ int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
     for (i = 0; scene_fields[i].key; ++i) {
         const field_spec *f = &scene_fields[i];
         char range[96];
-        if (scene->set_file[i] >= 0 || f->default_text)
+        if (scene->set_file[i] != SCENE_NOT_SET || f->default_text)
             continue;
         field_range_text(f, range, sizeof range);
         snprintf(err, err_size, "%s: missing field [%s] %s (%s; allowed: %s)%s", path, f->section, f->key,
                  f->meaning, range, scene->file_count > 1 ? " in the file and its base" : "");
+        return -1;
+    }
+    if (!name_from_path && scene->set_file[field_index("scene", "name")] == SCENE_NOT_SET) {
+        snprintf(err, err_size, "%s: the file name cannot be the scene's name (longer than %d characters "
+                 "or not UTF-8): set [scene] name", path, SCENE_TEXT - 1);
         return -1;
     }
     return 0;
@@ -353,21 +598,23 @@ int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
 int scene_set(scene_file *scene, const char *section, const char *key, const char *value,
               const char *origin, char *err, size_t err_size)
 {
-    const int file = add_file(scene, origin, 1, err, err_size);
-    if (file < 0)
+    if (strlen(origin) >= SCENE_OPTION) {
+        snprintf(err, err_size, "%.*s...: option name too long (at most %d characters)", SCENE_OPTION,
+                 origin, SCENE_OPTION - 1);
         return -1;
-    return set_field(scene, file, 0, section, key, value, err, err_size);
+    }
+    return set_field(scene, SCENE_BY_OPTION, origin, 0, section, key, value, err, err_size);
 }
 
 const char *scene_where(const scene_file *scene, const char *section, const char *key,
                         char *out, size_t size)
 {
     const int i = field_index(section, key);
-    if (i < 0 || scene->set_file[i] < 0)
+    if (i < 0 || scene->set_file[i] == SCENE_NOT_SET)
         snprintf(out, size, "(default)");
-    else if (scene->set_line[i] > 0)
-        snprintf(out, size, "%s:%d", scene->files[scene->set_file[i]], scene->set_line[i]);
+    else if (scene->set_file[i] == SCENE_BY_OPTION)
+        snprintf(out, size, "%s", scene->set_option[i]);
     else
-        snprintf(out, size, "%s", scene->files[scene->set_file[i]]);
+        snprintf(out, size, "%s:%d", scene->files[scene->set_file[i]], scene->set_line[i]);
     return out;
 }

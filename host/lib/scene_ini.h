@@ -8,14 +8,25 @@
 #define SCENE_PATH 512
 #define SCENE_MAX_FILES 8
 #define SCENE_MAX_FIELDS 40
+/* A scene file (and each base) is a regular file of at most this many bytes
+ * (1 MiB; the shipped ones are under 2 KiB): a FIFO, a device or a huge file
+ * would otherwise be read for ever. */
+#define SCENE_MAX_BYTES (1L << 20)
 
-/* A scene as read: the parameters and where each one was set. */
+#define SCENE_OPTION 64
+#define SCENE_NOT_SET (-1)   /* set_file: the field was not set (default or missing) */
+#define SCENE_BY_OPTION (-2) /* set_file: set by a command-line option (set_option) */
+
+/* A scene as read: the parameters and where each one was set. Files and
+ * options are recorded apart, so that options never use up the
+ * SCENE_MAX_FILES slots of the base chain. */
 typedef struct scene_file {
     scene_params params;
-    char files[SCENE_MAX_FILES][SCENE_PATH]; /* [0]: the file asked for; then bases, options */
+    char files[SCENE_MAX_FILES][SCENE_PATH]; /* [0]: the file asked for; then its bases */
     int file_count;
-    int set_file[SCENE_MAX_FIELDS];          /* index into files, -1: not set */
+    int set_file[SCENE_MAX_FIELDS];          /* index into files, SCENE_NOT_SET or SCENE_BY_OPTION */
     int set_line[SCENE_MAX_FIELDS];
+    char set_option[SCENE_MAX_FIELDS][SCENE_OPTION]; /* the option, when SCENE_BY_OPTION */
 } scene_file;
 
 /* Reads path, after its base file if it names one ([scene] base = FILE,
@@ -24,8 +35,10 @@ typedef struct scene_file {
  * Returns 0, or -1 with "file:line: what is wrong" in err. */
 int scene_load(const char *path, scene_file *scene, char *err, size_t err_size);
 
-/* Sets one field from text as if read from a file named origin (used for
- * command-line overrides such as --dt). Same checks; returns 0 or -1. */
+/* Sets one field from text given by the command-line option origin (such as
+ * --dt; shorter than SCENE_OPTION). Same checks as in a file; messages name
+ * the option. Any number of options may be set, the last value of a field
+ * wins. Returns 0 or -1. */
 int scene_set(scene_file *scene, const char *section, const char *key, const char *value,
               const char *origin, char *err, size_t err_size);
 

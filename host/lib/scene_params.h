@@ -63,4 +63,19 @@ extern const field_spec scene_fields[];
 /* Writes "[low, high)" style text of f's range into out. */
 void field_range_text(const field_spec *f, char *out, size_t size);
 
+/* Numbers in messages (size: at least 32 characters each). Bounds print
+ * with the fewest significant digits, 6 at least and 17 at most, that keep
+ * the text on the allowed side of the bound: a user who types it back is
+ * accepted (%g could round 0.9642857 up to 0.964286, outside). Never %f: a
+ * bound can be any double.
+ *   bound_text:       side < 0: a lower bound (text >= value); side > 0: an
+ *                     upper bound (text <= value); 0: %.6g
+ *   range_ends_text:  both ends of [low, high] as bounds, with more digits
+ *                     where 6 would print two different ends alike
+ *                     ("[0.5, 0.5]")
+ *   values_text:      two different values that must read differently */
+void bound_text(double value, int side, char *out, size_t size);
+void range_ends_text(double low, double high, char *low_text, char *high_text, size_t size);
+void values_text(double a, double b, char *a_text, char *b_text, size_t size);
+
 #endif

@@ -3,7 +3,11 @@
 # docs/robustness.md found mishandled (tests/robustness.mk: robustness-cli):
 # a NUL byte or UTF-16 text in a scene, a folder given as the scene, standard
 # output that cannot be written, a start position at the edge of its range
-# (host check in double, core check in bs_real). Run from the repository root.
+# (host check in double, core check in bs_real), text after a section's ],
+# CR-only line ends, /dev/zero or a FIFO as a scene or base, options that
+# used up the base-file slots, outputs that are one file (or the scene, or
+# standard output) and outputs truncated before another failed to open,
+# values that overflow together. Run from the repository root.
 bin=$1
 passed=0
 failed=0
@@ -11,16 +15,17 @@ tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
 
 # expect DESCRIPTION STATUS TEXT ARGS...: exit status STATUS and TEXT on
-# stderr; standard output goes to $stdout
+# stderr (an empty TEXT: anything); standard output goes to $stdout
 stdout=$tmp/out
+limit=  # a command prefix, such as timeout 20
 expect() {
     description=$1
     want=$2
     text=$3
     shift 3
-    "$bin" "$@" >"$stdout" 2>"$tmp/err"
+    $limit "$bin" "$@" >"$stdout" 2>"$tmp/err"
     status=$?
-    if [ "$status" -eq "$want" ] && grep -q -F -e "$text" "$tmp/err"; then
+    if [ "$status" -eq "$want" ] && { [ -z "$text" ] || grep -q -F -e "$text" "$tmp/err"; }; then
         passed=$((passed + 1))
         echo "ok   - $description"
     else
@@ -65,13 +70,96 @@ fi
 # values each in range whose product overflows: the start height
 # base_displacement - com_offset = a / (2 pi f)^2 - d
 printf "$good" | sed 's/^frequency = 124$/frequency = 1e-160/' >"$tmp/overflow.ini"
-expect "excitation whose displacement overflows: names the fields" 2 "[excitation] acceleration, frequency" \
-    run "$tmp/overflow.ini"
+expect "excitation whose displacement overflows: blames the frequency's line" 2 \
+    "overflow.ini:4: the values make the base" run "$tmp/overflow.ini"
+expect "... and gives the acceleration's line and range" 2 \
+    "[excitation] acceleration = 14 m/s^2 ($tmp/overflow.ini:5): [0, " run "$tmp/overflow.ini"
+# a denormal thickness gave NaN frequencies, blamed on dt
+printf "$good" | sed 's/^\[excitation\]$/[beam]\nthickness = 1e-320\n[excitation]/' >"$tmp/denormal.ini"
+expect "a denormal thickness is blamed on the thickness" 2 "denormal.ini:4: the values make" run "$tmp/denormal.ini"
 expect "more steps than a double counts exactly" 2 "[run] t_end = 1e+09 s is more than 2^53 steps" \
     run "$tmp/good.ini" --dt 1e-12 --t-end 1e9
 expect "--out and --periods naming one file" 2 "--out and --periods both name" \
     run "$tmp/good.ini" --out "$tmp/same.csv" --periods "$tmp/same.csv"
+
+# ---- outputs compared as files, opened all or none (they used to be
+# compared as strings, sweep's --trace not at all, and --out was truncated
+# before --periods failed to open)
+# unchanged DESCRIPTION FILE: FILE still holds "keep"
+unchanged() {
+    if [ "$(cat "$2")" = keep ]; then
+        passed=$((passed + 1)); echo "ok   - $1"
+    else
+        failed=$((failed + 1)); echo "FAIL - $1: $2 holds $(head -c 80 "$2")"
+    fi
+}
+echo keep >"$tmp/keep.csv"
+ln -s keep.csv "$tmp/symlink.csv"
+ln "$tmp/keep.csv" "$tmp/hardlink.csv"
+ln -s nowhere.csv "$tmp/dangling.csv"
+mkdir "$tmp/sub"
+expect "--out ./x and --periods x are one file" 2 "are the same file" \
+    run "$tmp/good.ini" --out "$tmp/./keep.csv" --periods "$tmp/keep.csv"
+expect "a symbolic link to --out as --periods" 2 "are the same file" \
+    run "$tmp/good.ini" --out "$tmp/keep.csv" --periods "$tmp/symlink.csv"
+expect "a hard link to --out as --periods" 2 "are the same file" \
+    run "$tmp/good.ini" --out "$tmp/hardlink.csv" --periods "$tmp/keep.csv"
+unchanged "outputs that are one file leave it untouched" "$tmp/keep.csv"
+expect "two spellings of a file still to be created" 2 "are the same file" \
+    run "$tmp/good.ini" --out "$tmp/new.csv" --periods "$tmp/sub/../new.csv"
+expect "a dangling link to --out as --periods" 2 "are the same file" \
+    run "$tmp/good.ini" --out "$tmp/nowhere.csv" --periods "$tmp/dangling.csv"
+stdout=$tmp/summary.txt
+expect "--out /dev/stdout when standard output is a file" 2 "is where standard output goes" \
+    run "$tmp/good.ini" --out /dev/stdout
+expect "--out naming the file standard output goes to" 2 "is where standard output goes" \
+    run "$tmp/good.ini" --out "$tmp/summary.txt"
+stdout=$tmp/out
+expect "sweep --out and --trace are one file" 2 "are the same file" \
+    sweep "$tmp/good.ini" --dir up --out "$tmp/keep.csv" --trace "$tmp/symlink.csv" --trace-at 0.2 \
+    --from 0.2 --to 0.21 --step 0.01 --hold 1 --record 1
+unchanged "sweep leaves it untouched" "$tmp/keep.csv"
+expect "the scene file as --out" 2 "is the scene file" run "$tmp/good.ini" --out "$tmp/./good.ini"
+expect "the base file as --periods" 2 "is the scene's base file" run "$tmp/good.ini" --periods "$tmp/mssp2023.ini"
+expect "the scene file as sweep --out" 2 "is the scene file" \
+    sweep "$tmp/good.ini" --dir up --out "$tmp/good.ini" --from 0.2 --to 0.21 --step 0.01
+expect "a --periods that cannot be opened" 1 "cannot open $tmp/none/p.csv" \
+    run "$tmp/good.ini" --out "$tmp/keep.csv" --periods "$tmp/none/p.csv"
+unchanged "... leaves --out untouched" "$tmp/keep.csv"
+expect "a --trace that cannot be opened" 1 "cannot open $tmp/none/t.csv" \
+    sweep "$tmp/good.ini" --dir up --out "$tmp/fresh.csv" --trace "$tmp/none/t.csv" --trace-at 0.2 \
+    --from 0.2 --to 0.21 --step 0.01
+if [ -e "$tmp/fresh.csv" ]; then
+    failed=$((failed + 1)); echo "FAIL - ... and leaves no new --out file behind"
+else
+    passed=$((passed + 1)); echo "ok   - ... and leaves no new --out file behind"
+fi
+expect "two outputs to /dev/null run" 0 "" run "$tmp/good.ini" --out /dev/null --periods /dev/null
 expect "a contact-solve cap above the real-time range" 2 "allowed: an integer in [1, 100000]" \
     run "$tmp/good.ini" --pgs-iters 1000000
+# text after the ] of a section line, CR-only line ends: libinih would drop
+# them and the base value would run
+printf "$good" | sed 's/^\[excitation\]$/[excitation] frequency = 200/' >"$tmp/after.ini"
+expect "a key after [section] on its line is refused" 2 "after.ini:3: text after [excitation]" run "$tmp/after.ini"
+printf "$good" | tr '\n' '\r' >"$tmp/mac.ini"
+expect "CR-only line ends are refused" 2 "mac.ini:1: carriage return without a line feed" run "$tmp/mac.ini"
+printf "$good" | sed 's/$/\r/' >"$tmp/crlf.ini"
+expect "CRLF line ends run" 0 "" run "$tmp/crlf.ini"
+# a base that never ends, a FIFO: refused at once (they used to hang; the
+# timeout turns a hang into a failure where timeout exists)
+if command -v timeout >/dev/null 2>&1; then limit="timeout 20"; fi
+printf '[scene]\nbase = /dev/zero\n' >"$tmp/zero.ini"
+expect "base = /dev/zero is refused" 2 "zero.ini:2: [scene] base = /dev/zero: cannot read /dev/zero: a character device" \
+    run "$tmp/zero.ini"
+if mkfifo "$tmp/fifo.ini" 2>/dev/null; then
+    expect "a FIFO as the scene is refused" 2 "fifo.ini: cannot read scene file: a FIFO" run "$tmp/fifo.ini"
+fi
+limit=
+# options used to take the slots of base files (8 in all): a chain of 7
+# files and five options failed with "too many nested base files"
+for i in 1 2 3 4 5; do printf '[scene]\nbase = chain%d.ini\n' $((i + 1)) >"$tmp/chain$i.ini"; done
+printf '[scene]\nbase = good.ini\n' >"$tmp/chain6.ini"
+expect "a chain of 7 files and five options runs" 0 "" run "$tmp/chain1.ini" --dt 2e-5 --t-end 0.001 \
+    --s0 0.3 --model free --pgs-iters 2 --dt 1e-5
 echo "check_robustness_cli: $passed passed, $failed failed ($bin)"
 [ "$failed" -eq 0 ]

@@ -72,6 +72,13 @@ edge = {
     "s0_edge": GOOD.replace("[excitation]", "[beam]\nlength = 0.05\n[slider]\nslot_width = 0.02\n"
                             "[numerics]\ndt = 5e-6\n[excitation]").replace("s0 = 0.3", "s0 = 0.8"),
     "long_beam": GOOD.replace("[excitation]", "[beam]\nlength = 0.3\n[slider]\nslot_width = 0.013\n[excitation]"),
+    # the reader's line checks (docs/robustness.md section 6, "Found")
+    "section_trailing": GOOD.replace("[excitation]", "[excitation] frequency = 200"),
+    "section_spaces": GOOD.replace("[run]", "[ run ]"),
+    "section_empty": GOOD.replace("[run]", "[]"),
+    "cr_only": GOOD.replace("\n", "\r"),
+    "control_char": GOOD + "[scene]\nname = a\x1bb\n",
+    "no_key": GOOD + "= 0.3\n",
 }
 for name, text in edge.items():
     write("fuzz_scene", name, text)

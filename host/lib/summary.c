@@ -1,0 +1,128 @@
+/* summary.c - the JSON summaries of run and sweep (summary.h). */
+#include "summary.h"
+
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdio.h>
+
+/* A summary being built; failed: some part could not be added. */
+typedef struct summary {
+    cJSON *root;
+    int failed;
+} summary;
+
+static void add_text(summary *s, const char *key, const char *text)
+{
+    if (!cJSON_AddStringToObject(s->root, key, text))
+        s->failed = 1;
+}
+
+/* value as format prints it (a %f of 1e300 is 300 digits long). */
+static void add_number(summary *s, const char *key, const char *format, double value)
+{
+    char text[400];
+    if (!isfinite(value)) {
+        if (!cJSON_AddNullToObject(s->root, key))
+            s->failed = 1;
+        return;
+    }
+    snprintf(text, sizeof text, format, value);
+    if (!cJSON_AddRawToObject(s->root, key, text))
+        s->failed = 1;
+}
+
+static void add_int(summary *s, const char *key, long long value)
+{
+    char text[32];
+    snprintf(text, sizeof text, "%lld", value);
+    if (!cJSON_AddRawToObject(s->root, key, text))
+        s->failed = 1;
+}
+
+static void add_count(summary *s, const char *key, unsigned long long value)
+{
+    char text[32];
+    snprintf(text, sizeof text, "%llu", value);
+    if (!cJSON_AddRawToObject(s->root, key, text))
+        s->failed = 1;
+}
+
+/* The contact-solve figures both summaries end with. */
+static void add_contact_figures(summary *s, int max_sweeps, uint64_t unconverged, uint64_t contact_steps,
+                                uint64_t total_sweeps)
+{
+    add_int(s, "max_pgs_iters", max_sweeps);
+    add_count(s, "unconverged_steps", unconverged);
+    add_count(s, "contact_steps", contact_steps);
+    add_number(s, "mean_pgs_iters", "%.4g", contact_steps ? (double)total_sweeps / (double)contact_steps : 0.0);
+}
+
+/* Prints the summary as one line and frees it; 0 or -1. */
+static int finish(summary *s, FILE *out)
+{
+    char *line = s->failed ? NULL : cJSON_PrintUnformatted(s->root);
+    int status = -1;
+
+    if (line) {
+        status = fputs(line, out) >= 0 && fputc('\n', out) == '\n' ? 0 : -1;
+        cJSON_free(line);
+    }
+    cJSON_Delete(s->root);
+    return status;
+}
+
+int summary_print_run(FILE *out, const scene_params *p, const bs_scene *scene, const run_result *r)
+{
+    summary s;
+    char hash[16];
+
+    s.root = cJSON_CreateObject();
+    s.failed = s.root == NULL;
+    add_text(&s, "scene", p->name);
+    add_text(&s, "model", p->model == BS_MODEL_PCS ? "pcs" : "free");
+    add_text(&s, "precision", BS_REAL_NAME);
+    add_int(&s, "modes", scene->n_modes);
+    add_number(&s, "dt", "%g", p->dt);
+    add_text(&s, "status", r->write_failed ? "write error" : bs_status_text(r->status));
+    add_number(&s, "t_end", "%.9g", r->t);
+    add_count(&s, "steps", (unsigned long long)r->steps);
+    add_number(&s, "s0", "%.9g", p->s0);
+    add_number(&s, "s_final", "%.9g", r->s_final);
+    add_number(&s, "s_min", "%.9g", r->s_min);
+    add_number(&s, "t_s_min", "%.6f", r->t_s_min);
+    add_number(&s, "amp_final_h", "%.6g", r->amp_final_h);
+    add_int(&s, "amp_periods", r->amp_periods);
+    add_number(&s, "wall_s", "%.4g", r->wall_s);
+    add_number(&s, "steps_per_s", "%.4g", r->wall_s > 0.0 ? (double)r->steps / r->wall_s : 0.0);
+    add_contact_figures(&s, r->max_pgs_sweeps, r->unconverged_steps, r->contact_steps, r->total_sweeps);
+    snprintf(hash, sizeof hash, "%08x", (unsigned)r->hash);
+    add_text(&s, "hash", hash);
+    return finish(&s, out);
+}
+
+int summary_print_sweep(FILE *out, const scene_params *p, const bs_scene *scene, const sweep_options *o,
+                        const sweep_result *r)
+{
+    summary s;
+
+    s.root = cJSON_CreateObject();
+    s.failed = s.root == NULL;
+    add_text(&s, "scene", p->name);
+    add_text(&s, "command", "sweep");
+    add_text(&s, "dir", o->down ? "down" : "up");
+    add_text(&s, "precision", BS_REAL_NAME);
+    add_int(&s, "modes", scene->n_modes);
+    add_number(&s, "dt", "%g", p->dt);
+    add_text(&s, "status", r->write_failed ? "write error" : bs_status_text(r->status));
+    add_number(&s, "from", "%.9g", o->from);
+    add_number(&s, "to", "%.9g", o->to);
+    add_number(&s, "step", "%.9g", o->step);
+    add_int(&s, "hold", o->hold);
+    add_int(&s, "record", o->record);
+    add_int(&s, "points", r->points_done);
+    add_count(&s, "steps", (unsigned long long)r->steps);
+    add_number(&s, "wall_s", "%.4g", r->wall_s);
+    add_number(&s, "steps_per_s", "%.4g", r->wall_s > 0.0 ? (double)r->steps / r->wall_s : 0.0);
+    add_contact_figures(&s, r->max_sweeps, r->unconverged_steps, r->contact_steps, r->total_sweeps);
+    return finish(&s, out);
+}
