@@ -142,5 +142,12 @@ else
     echo "skip - --out /dev/full (no /dev/full here)"
 fi
 
+# ---- version and field reference
+"$bin" --version >"$tmp/o" 2>"$tmp/e"
+check_status "--version exits 0" 0 $? "$tmp/e"
+check_has "--version names the version" "$tmp/o" "beamslider $(sed -n 's/^#define BS_VERSION_STRING "\(.*\)"/\1/p' core/include/beamslider.h) (revision "
+"$bin" fields extra >"$tmp/o" 2>"$tmp/e"
+check_status "fields with an argument exits 2" 2 $? "$tmp/e"
+
 echo "check_cli: $passed passed, $failed failed ($bin)"
 [ "$failed" -eq 0 ]

@@ -1,7 +1,8 @@
 #!/bin/sh
-# check_configs.sh BEAMSLIDER - every checked-in compile-time scene header
-# configs/NAME.h must be exactly what `beamslider gen configs/NAME.ini` prints
-# now (else: run `make configs`).
+# check_configs.sh BEAMSLIDER - the generated files that are checked in must be
+# current: every compile-time scene header configs/NAME.h exactly what
+# `beamslider gen configs/NAME.ini` prints now (else: run `make configs`), and
+# docs/fields.md what `beamslider fields` prints (else: run `make fields`).
 bin=$1
 stale=0
 count=0
@@ -14,5 +15,9 @@ for header in configs/*.h; do
     fi
 done
 [ "$count" -gt 0 ] || { echo "check_configs: FAIL: no configs/*.h"; exit 1; }
-[ "$stale" -eq 0 ] && echo "check_configs: ok: $count headers match their scene files"
+if ! "$bin" fields | cmp -s - docs/fields.md; then
+    echo "check_configs: FAIL: docs/fields.md is stale (run: make fields)"
+    stale=1
+fi
+[ "$stale" -eq 0 ] && echo "check_configs: ok: $count headers match their scene files, docs/fields.md is current"
 exit $stale

@@ -10,6 +10,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include "support.h"
+#include "bs_revision.h"
 
 #include <cjson/cJSON.h>
 #include <dirent.h>
@@ -37,11 +38,11 @@ static const char good_scene[] = "[scene]\nbase = mssp2023.ini\n[excitation]\nfr
 static const char *const run_keys[] = {
     "scene", "model", "precision", "modes", "dt", "status", "t_end", "steps", "s0", "s_final", "s_min",
     "t_s_min", "amp_final_h", "amp_periods", "wall_s", "steps_per_s", "max_pgs_iters", "unconverged_steps",
-    "contact_steps", "mean_pgs_iters", "hash", NULL };
+    "contact_steps", "mean_pgs_iters", "hash", "version", "revision", NULL };
 static const char *const sweep_keys[] = {
     "scene", "command", "dir", "precision", "modes", "dt", "status", "from", "to", "step", "hold", "record",
     "points", "steps", "wall_s", "steps_per_s", "max_pgs_iters", "unconverged_steps", "contact_steps",
-    "mean_pgs_iters", NULL };
+    "mean_pgs_iters", "version", "revision", NULL };
 
 static void write_file(const char *path, const char *text)
 {
@@ -226,7 +227,8 @@ static void test_run_summary_keeps_the_number_formats(void **state)
              "\"status\":\"ok\",\"t_end\":60,\"steps\":3000000,\"s0\":0.3,\"s_final\":0.331294145,"
              "\"s_min\":0.258502209,\"t_s_min\":9.290160,\"amp_final_h\":1.23524,\"amp_periods\":25,"
              "\"wall_s\":2.359,\"steps_per_s\":1.272e+06,\"max_pgs_iters\":2,\"unconverged_steps\":13,"
-             "\"contact_steps\":2713455,\"mean_pgs_iters\":1.003,\"hash\":\"a75df610\"}\n", BS_REAL_NAME);
+             "\"contact_steps\":2713455,\"mean_pgs_iters\":1.003,\"hash\":\"a75df610\",\"version\":\"%s\","
+             "\"revision\":\"%s\"}\n", BS_REAL_NAME, BS_VERSION_STRING, BS_REVISION);
     assert_string_equal(line, expected);
     root = parse_summary(run_keys);
     cJSON_Delete(root);
@@ -293,8 +295,9 @@ static void test_sweep_summary_is_json_with_its_formats(void **state)
              "{\"scene\":\"sw\\\"eep\\\\\\u001f\",\"command\":\"sweep\",\"dir\":\"up\",\"precision\":\"%s\","
              "\"modes\":5,\"dt\":2e-05,\"status\":\"ok\",\"from\":0,\"to\":0.5,\"step\":0.005,\"hold\":100,"
              "\"record\":25,\"points\":101,\"steps\":5000000,\"wall_s\":3.25,\"steps_per_s\":1.538e+06,"
-             "\"max_pgs_iters\":2,\"unconverged_steps\":0,\"contact_steps\":4,\"mean_pgs_iters\":1.25}\n",
-             BS_REAL_NAME);
+             "\"max_pgs_iters\":2,\"unconverged_steps\":0,\"contact_steps\":4,\"mean_pgs_iters\":1.25,"
+             "\"version\":\"%s\",\"revision\":\"%s\"}\n",
+             BS_REAL_NAME, BS_VERSION_STRING, BS_REVISION);
     assert_string_equal(line, expected);
     root = parse_summary(sweep_keys);
     assert_string_equal(cJSON_GetObjectItemCaseSensitive(root, "scene")->valuestring, name);

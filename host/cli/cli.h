@@ -13,6 +13,7 @@ int cli_modes(int argc, char **argv);
 int cli_gen(int argc, char **argv);
 int cli_sweep(int argc, char **argv);
 int cli_run(int argc, char **argv);
+int cli_fields(int argc, char **argv);
 
 /* Prints "beamslider: error: ..." to stderr. */
 void cli_error(const char *format, ...);

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "beamslider.h"
+#include "bs_revision.h"
 #include "cli.h"
 
 static const char usage[] =
@@ -17,6 +18,8 @@ static const char usage[] =
     "                [--out FILE.csv] [--every N] [--periods FILE.csv]\n"
     "                         simulate; CSV rows every N steps, one row per excitation\n"
     "                         period with --periods, JSON summary on stdout\n"
+    "  fields                 the reference of every scene field (Markdown; docs/fields.md)\n"
+    "  --version              version, source revision and precision\n"
     "core precision: " BS_REAL_NAME "\n";
 
 void cli_error(const char *format, ...)
@@ -52,6 +55,12 @@ int main(int argc, char **argv)
         return finish(cli_gen(argc - 2, argv + 2));
     if (argc >= 2 && !strcmp(argv[1], "sweep"))
         return finish(cli_sweep(argc - 2, argv + 2));
+    if (argc >= 2 && !strcmp(argv[1], "fields"))
+        return finish(cli_fields(argc - 2, argv + 2));
+    if (argc == 2 && !strcmp(argv[1], "--version")) {
+        printf("beamslider %s (revision %s), core precision %s\n", bs_version(), BS_REVISION, BS_REAL_NAME);
+        return finish(CLI_OK);
+    }
     if (argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
         fputs(usage, stdout);
         return finish(CLI_OK);

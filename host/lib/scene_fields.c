@@ -1,6 +1,6 @@
-/* scene_fields.c - every field a scene file may hold, with unit and range.
- * The INI reader, the error messages and the docs' field list all come from
- * this one table. */
+/* scene_fields.c - the table of every field a scene file may hold
+ * (scene_fields.h), for the INI reader, its messages and the docs' field list;
+ * and how its ranges and bounds are written in messages. */
 #include "scene_params.h"
 
 #include <math.h>
@@ -8,69 +8,18 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define REAL(section, key, member, low, high, low_open, high_open, unit, meaning) \
-    { section, key, FIELD_REAL, offsetof(scene_params, member), low, high, low_open, high_open, unit, meaning, 0, 0 }
-#define INT(section, key, member, low, high, unit, meaning) \
-    { section, key, FIELD_INT, offsetof(scene_params, member), low, high, 0, 0, unit, meaning, 0, 0 }
-#define CHOICE(section, key, member, choices, default_text, meaning) \
-    { section, key, FIELD_CHOICE, offsetof(scene_params, member), 0, 0, 0, 0, "", meaning, choices, default_text }
-#define REAL_OPTIONAL(section, key, member, low, high, default_text, unit, meaning) \
-    { section, key, FIELD_REAL, offsetof(scene_params, member), low, high, 0, 0, unit, meaning, 0, default_text }
-#define INT_OPTIONAL(section, key, member, low, high, default_text, unit, meaning) \
-    { section, key, FIELD_INT, offsetof(scene_params, member), low, high, 0, 0, unit, meaning, 0, default_text }
-#define TEXT(section, key, member, meaning) \
-    { section, key, FIELD_TEXT, offsetof(scene_params, member), 0, 0, 0, 0, "", meaning, 0, "" }
+const char *const scene_models[] = { "free", "pcs", 0 };
+const char *const scene_rotations[] = { "locked", "free", 0 };
+const char *const scene_switches[] = { "off", "on", 0 };
+const char *const scene_integrators[] = { "explicit", "implicit", 0 };
 
-/* The text of a macro's value (the library's solver defaults). */
-#define TEXT_OF(macro) TEXT_OF_(macro)
-#define TEXT_OF_(value) #value
-
-/* Choice lists: the index of the name is the stored value. */
-static const char *const models[] = { "free", "pcs", 0 };           /* = bs_model */
-static const char *const rotations[] = { "locked", "free", 0 };     /* rotation = 1: free */
-static const char *const switches[] = { "off", "on", 0 };
-static const char *const integrators[] = { "explicit", "implicit", 0 };
+#define SPEC(kind, section, key, member, where, low, high, low_open, high_open, default_text, unit, meaning, \
+             choices)                                                                                    \
+    { section, key, FIELD_##kind, offsetof(scene_params, member), low, high, low_open, high_open, unit,  \
+      meaning, choices, default_text },
 
 const field_spec scene_fields[] = {
-    TEXT("scene", "name", name, "scene name"),
-    TEXT("scene", "description", description, "one line on what the scene shows"),
-    REAL("beam", "length", beam.length, 0, HUGE_VAL, 1, 1, "m", "free length L between the clamps"),
-    REAL("beam", "thickness", beam.thickness, 0, HUGE_VAL, 1, 1, "m", "thickness h"),
-    REAL("beam", "density", beam.density, 0, HUGE_VAL, 1, 1, "kg/m^3", "density rho"),
-    REAL("beam", "youngs_modulus", beam.youngs_modulus, 0, HUGE_VAL, 1, 1, "Pa", "Young's modulus E"),
-    REAL("beam", "mass", beam.mass, 0, HUGE_VAL, 1, 1, "kg", "mass rho A L of the free length (sets the width)"),
-    REAL("beam", "damping_ratio", damping_ratio, 0, 1, 0, 1, "", "modal damping ratio D of every mode"),
-    REAL("clamps", "rotational_stiffness", beam.k_rot, 0, HUGE_VAL, 1, 1, "N m/rad", "rotational spring k_r at each end"),
-    REAL("clamps", "axial_stiffness", beam.k_axial, 0, HUGE_VAL, 1, 1, "N/m", "axial stiffness k_t of the clamps"),
-    REAL("slider", "mass", slider_mass, 0, HUGE_VAL, 1, 1, "kg", "slider mass m"),
-    REAL("slider", "inertia", slider_inertia, 0, HUGE_VAL, 1, 1, "kg m^2", "rotary inertia J_C about the centre of mass"),
-    REAL("slider", "slot_width", slot_width, 0, HUGE_VAL, 1, 1, "m", "distance B between the slot's contact corners"),
-    REAL("slider", "com_offset", com_offset, -HUGE_VAL, HUGE_VAL, 1, 1, "m", "distance d of the centre of mass below the slot centre"),
-    REAL("slider", "play_ratio", play_ratio, 1, HUGE_VAL, 0, 1, "", "slot height over beam thickness r_h = R/h"),
-    CHOICE("slider", "rotation", rotation, rotations, "free", "free | locked (a guided slider that cannot tilt)"),
-    REAL("contact", "friction", mu, 0, HUGE_VAL, 0, 1, "", "Coulomb friction coefficient mu"),
-    REAL("contact", "restitution", e_n, 0, 1, 0, 0, "", "Newton normal restitution e_N"),
-    REAL("environment", "gravity", gravity, 0, HUGE_VAL, 0, 1, "m/s^2", "acceleration of gravity g"),
-    REAL("environment", "tilt", tilt, -90, 90, 1, 1, "deg", "beam axis above the horizontal"),
-    REAL("excitation", "frequency", frequency, 0, HUGE_VAL, 1, 1, "Hz", "excitation frequency f_ex"),
-    REAL("excitation", "acceleration", acceleration, 0, HUGE_VAL, 0, 1, "m/s^2", "base acceleration amplitude a"),
-    INT("numerics", "modes", modes, 1, BS_MAX_MODES, "", "number of beam modes N"),
-    CHOICE("numerics", "stretching", stretching, switches, "on", "on | off: the cubic bending-stretching term"),
-    REAL("numerics", "dt", dt, 0, HUGE_VAL, 1, 1, "s", "time step (explicit limit: omega_max dt < 2)"),
-    CHOICE("numerics", "integrator", implicit, integrators, "explicit",
-           "explicit (midpoint) | implicit (modal stiffness and damping, theta method)"),
-    REAL_OPTIONAL("numerics", "theta", theta, 0.5, 1.0, "0.5", "", "theta of the implicit step"),
-    INT_OPTIONAL("solver", "max_sweeps", solver_max_sweeps, 1, BS_SOLVER_MAX_SWEEPS,
-                 TEXT_OF(BS_SOLVER_DEFAULT_MAX_SWEEPS), "", "cap on contact-solve sweeps per step"),
-    REAL_OPTIONAL("solver", "tol_rel", solver_tol_rel, 0, HUGE_VAL, TEXT_OF(BS_SOLVER_DEFAULT_TOL_REL), "",
-                  "relative tolerance of the contact solve"),
-    REAL_OPTIONAL("solver", "tol_abs", solver_tol_abs, 0, HUGE_VAL, TEXT_OF(BS_SOLVER_DEFAULT_TOL_ABS), "N s",
-                  "absolute tolerance of the contact solve"),
-    CHOICE("solver", "residual", solver_residual, switches, "on",
-           "on | off: measure the residual after each sweep (off: exactly max_sweeps sweeps)"),
-    REAL("run", "s0", s0, 0, 1, 0, 0, "", "start position x_C / L (PCS: prescribed position)"),
-    REAL("run", "t_end", t_end, 0, HUGE_VAL, 1, 1, "s", "simulated time"),
-    CHOICE("run", "model", model, models, 0, "free | pcs"),
+    SCENE_FIELDS(SPEC)
     { 0, 0, FIELD_REAL, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
 };
 

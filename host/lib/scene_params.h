@@ -5,38 +5,23 @@
 #include <stddef.h>
 #include "beamslider.h"
 #include "modal.h"
+#include "scene_fields.h"
 
-#define SCENE_TEXT 128
+/* The members of the field table that are scene_params' own; the [beam] and
+ * [clamps] fields of the beam live in its modal_beam. */
+#define SCENE_PARAM_TYPE_REAL(member) double member;
+#define SCENE_PARAM_TYPE_INT(member) int member;
+#define SCENE_PARAM_TYPE_CHOICE(member) int member;
+#define SCENE_PARAM_TYPE_TEXT(member) char member[SCENE_TEXT];
+#define SCENE_PARAM_OWN(kind, member) SCENE_PARAM_TYPE_##kind(member)
+#define SCENE_PARAM_NESTED(kind, member)
+#define SCENE_PARAM_MEMBER(kind, section, key, member, where, low, high, low_open, high_open, default_text, \
+                           unit, meaning, choices)                                                        \
+    SCENE_PARAM_##where(kind, member)
 
 typedef struct scene_params {
-    char name[SCENE_TEXT];          /* [scene] name, default: file name without .ini */
-    char description[SCENE_TEXT];   /* [scene] description */
-    modal_beam beam;                /* [beam], [clamps] */
-    double damping_ratio;           /* D, all modes */
-    double slider_mass;             /* m [kg] */
-    double slider_inertia;          /* J_C [kg m^2] */
-    double slot_width;              /* B [m] */
-    double com_offset;              /* d [m] */
-    double play_ratio;              /* r_h = R / h */
-    int rotation;                   /* 1: the slider may rotate, 0: locked */
-    double mu;                      /* Coulomb friction */
-    double e_n;                     /* normal restitution */
-    double gravity;                 /* g [m/s^2] */
-    double tilt;                    /* beam axis above horizontal [deg] */
-    double frequency;               /* f_ex [Hz] */
-    double acceleration;            /* a [m/s^2] */
-    int modes;                      /* N */
-    int implicit;                   /* 0: explicit midpoint step, 1: linearly implicit theta step */
-    double theta;                   /* implicit step's theta, [1/2, 1] */
-    int stretching;                 /* 1: cubic bending-stretching term, 0: left out */
-    double dt;                      /* [s] */
-    int solver_max_sweeps;          /* [solver]: the run's bs_solver_options */
-    double solver_tol_rel;
-    double solver_tol_abs;          /* [N s] */
-    int solver_residual;            /* measure_residual */
-    double s0;                      /* start position x_C / L */
-    double t_end;                   /* [s] */
-    int model;                      /* bs_model */
+    modal_beam beam;                /* [beam] and [clamps]: the modal analysis's input */
+    SCENE_FIELDS(SCENE_PARAM_MEMBER)
 } scene_params;
 
 typedef enum field_kind { FIELD_REAL, FIELD_INT, FIELD_CHOICE, FIELD_TEXT } field_kind;

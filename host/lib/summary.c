@@ -2,6 +2,7 @@
 #include "summary.h"
 
 #include <cjson/cJSON.h>
+#include "bs_revision.h"
 #include <math.h>
 #include <stdio.h>
 
@@ -57,6 +58,14 @@ static void add_contact_figures(summary *s, int max_sweeps, uint64_t unconverged
     add_number(s, "mean_pgs_iters", "%.4g", contact_steps ? (double)total_sweeps / (double)contact_steps : 0.0);
 }
 
+/* What produced the numbers: the library's version and the source revision
+ * (git describe at build time; "unknown" outside a git checkout). */
+static void add_provenance(summary *s)
+{
+    add_text(s, "version", bs_version());
+    add_text(s, "revision", BS_REVISION);
+}
+
 /* Prints the summary as one line and frees it; 0 or -1. */
 static int finish(summary *s, FILE *out)
 {
@@ -97,6 +106,7 @@ int summary_print_run(FILE *out, const scene_params *p, const bs_scene *scene, c
     add_contact_figures(&s, r->max_pgs_sweeps, r->unconverged_steps, r->contact_steps, r->total_sweeps);
     snprintf(hash, sizeof hash, "%08x", (unsigned)r->hash);
     add_text(&s, "hash", hash);
+    add_provenance(&s);
     return finish(&s, out);
 }
 
@@ -124,5 +134,6 @@ int summary_print_sweep(FILE *out, const scene_params *p, const bs_scene *scene,
     add_number(&s, "wall_s", "%.4g", r->wall_s);
     add_number(&s, "steps_per_s", "%.4g", r->wall_s > 0.0 ? (double)r->steps / r->wall_s : 0.0);
     add_contact_figures(&s, r->max_sweeps, r->unconverged_steps, r->contact_steps, r->total_sweeps);
+    add_provenance(&s);
     return finish(&s, out);
 }
