@@ -142,6 +142,39 @@ else
     echo "skip - --out /dev/full (no /dev/full here)"
 fi
 
+# ---- gen prints text from the scene file as escaped string literals only:
+# a description that would close a comment and inject code, quotes, a
+# backslash and trigraph question marks come back as they were written
+cat > "$tmp/evil.ini" <<EOF
+[scene]
+base = $(pwd)/configs/fig6_1mode.ini
+name = evil"na\me??/
+description = */ int injected = 1; /* "quoted" ??= back\slash
+EOF
+if "$bin" gen "$tmp/evil.ini" > "$tmp/evil.h" 2>"$tmp/e"; then
+    pass "gen of a scene with hostile text exits 0"
+else
+    fail "gen of a scene with hostile text exits 0" "$(cat "$tmp/e")"
+fi
+cat > "$tmp/evil.c" <<'EOF'
+#include <stdio.h>
+#include "beamslider.h"
+#include "evil.h"
+int main(void) { printf("%s\n%s\n", BS_SCENE_NAME, BS_SCENE_DESCRIPTION); return bs_compiled_scene.n_modes != 1; }
+EOF
+if ${CC:-cc} -std=c99 -Wall -Wextra -Werror -I"$(dirname "$bin")/include" -Icore/include -I"$tmp" \
+       -o "$tmp/evil" "$tmp/evil.c" 2>"$tmp/e" && "$tmp/evil" > "$tmp/o"; then
+    pass "the header of a scene with hostile text compiles and holds its scene"
+else
+    fail "the header of a scene with hostile text compiles and holds its scene" "$(cat "$tmp/e")"
+fi
+printf '%s\n%s\n' 'evil"na\me??/' '*/ int injected = 1; /* "quoted" ??= back\slash' > "$tmp/want"
+if cmp -s "$tmp/o" "$tmp/want"; then
+    pass "name and description come back unchanged from the header"
+else
+    fail "name and description come back unchanged from the header" "$(cat "$tmp/o")"
+fi
+
 # ---- version and field reference
 "$bin" --version >"$tmp/o" 2>"$tmp/e"
 check_status "--version exits 0" 0 $? "$tmp/e"
