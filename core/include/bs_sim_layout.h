@@ -58,6 +58,7 @@ typedef struct bs_sim {
     bs_step_report report;
     bs_contact_set contacts;
     bs_shape_bound shape_bound;
+    bs_real stretch_rows[BS_MAX_MODES]; /* sum_j |S_ij|, for the stability bound (core/src/bs_beam.c) */
 } bs_sim;
 
 #endif

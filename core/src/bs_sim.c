@@ -6,6 +6,7 @@
  * refused with a status, never dereferenced beyond that field.
  */
 #include "beamslider.h"
+#include "bs_beam.h"
 #include "bs_port.h"
 #include "bs_shape.h"
 #include "bs_sim_internal.h"
@@ -82,6 +83,7 @@ bs_status bs_sim_init_(uint32_t tag, size_t sim_size, size_t scene_size, bs_sim 
     sim->report.converged = 1;
     sim->contacts.count = 0;
     bs_shape_bounds(scene, &sim->shape_bound);
+    bs_beam_stretch_rows(scene, sim->stretch_rows);
     sim->ready = BS_SIM_READY;
     return BS_OK;
 }

@@ -86,10 +86,11 @@ static bs_status smooth_part(const bs_sim *sim, step_state *s)
         bs_real q_stiff[BS_MAX_MODES];
         for (k = 0; k < n; ++k)
             q_stiff[k] = sim->q_beam[k] + scene->theta * dt * sim->u_beam[k];
-        stiffness = bs_beam_force(scene, s->q, q_stiff, sim->u_beam, s->base.acceleration, 0, force);
+        stiffness = bs_beam_force(scene, sim->stretch_rows, s->q, q_stiff, sim->u_beam, s->base.acceleration, 0,
+                                  force);
     } else
 #endif
-        stiffness = bs_beam_force(scene, s->q, s->q, sim->u_beam, s->base.acceleration, 1, force);
+        stiffness = bs_beam_force(scene, sim->stretch_rows, s->q, s->q, sim->u_beam, s->base.acceleration, 1, force);
     if (!(stiffness * dt * dt < BS_R(4.0)))
         return BS_E_UNSTABLE;
 
