@@ -21,15 +21,16 @@ typedef struct golden {
 } golden;
 
 static const golden pinned[] = {
-    { "configs/fig6.ini", 20000, 0xf2e88db9u, 0xc03af51bu },
-    { "configs/fig6.ini", 100000, 0x6ed90718u, 0xe6fc9b80u },
+    { "configs/fig6.ini", 20000, 0x65f2c1c8u, 0x34d5fb38u },
+    { "configs/fig6.ini", 100000, 0x175f5c50u, 0x7647f5f5u },
     { "configs/fig6_1mode.ini", 20000, 0xe8857dd2u, 0x9d781228u },
-    { "configs/fig6_1mode.ini", 100000, 0xbf44e372u, 0x4055ca9eu },
+    { "configs/fig6_1mode.ini", 100000, 0xbfd0216du, 0xbf10a1efu },
 };
 
 static void test_pinned_state_hashes(void **state)
 {
     size_t i;
+    int mismatches = 0;
     (void)state;
     for (i = 0; i < sizeof pinned / sizeof pinned[0]; ++i) {
         const golden *g = &pinned[i];
@@ -41,10 +42,11 @@ static void test_pinned_state_hashes(void **state)
         for (step = 0; step < g->steps; ++step)
             assert_int_equal(bs_sim_step(&sim), BS_OK);
         hash = bs_sim_hash(&sim);
-        print_message("%s, %ld steps, %s: hash %08x (pinned %08x)\n", g->scene_path, g->steps,
-                      BS_REAL_NAME, hash, expected);
-        assert_int_equal(hash, expected);
+        print_message("%s, %ld steps, %s: hash %08x (pinned %08x)%s\n", g->scene_path, g->steps,
+                      BS_REAL_NAME, hash, expected, hash == expected ? "" : ": DIFFERENT");
+        mismatches += hash != expected;
     }
+    assert_int_equal(mismatches, 0);
 }
 
 int main(void)

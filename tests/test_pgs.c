@@ -248,17 +248,189 @@ static void test_redundant_pair(void **state)
     }
     set.mu[0] = set.mu[1] = BS_R(0.3);
     result = solve(&set, 2, BS_R(1e-5), BS_R(0.0));
-#if BS_WITH_SUBSPACE
-    assert_true(result.converged);
+    assert_true(result.converged); /* two contacts: exact in every build */
     for (i = 0; i < 2; ++i) {
         assert_close("P_N", set.percussion[2 * i], -c_n / (a * (2.0 - d)), 0.0, BS_REAL_FLOAT ? 1e-3 : 1e-9);
         assert_close("P_T", set.percussion[2 * i + 1], -c_t / (a * (2.0 - d)), 0.0, BS_REAL_FLOAT ? 1e-3 : 1e-9);
     }
-#else
-    assert_false(result.converged);
-    assert_int_equal(result.sweeps, 2);
-    assert_true(result.residual > BS_R(1e-5) * bs_pgs_scale(&set));
-#endif
+}
+
+/* ---- two corners on one face: nearly parallel rows, solved exactly ------- */
+
+/* A deterministic generator (the test must not depend on the C library's). */
+static double next_uniform(unsigned long *state)
+{
+    *state = *state * 6364136223846793005ul + 1442695040888963407ul;
+    return (double)(*state >> 11) / 9007199254740992.0; /* [0, 1) */
+}
+
+/* Solves the n x n system a x = b (n <= 4) in long double by Gaussian
+ * elimination with partial pivoting; 0 when a pivot vanishes. */
+static int solve_small(long double a[4][5], int n, long double *x)
+{
+    int i, j, k;
+    for (k = 0; k < n; ++k) {
+        int pivot = k;
+        for (i = k + 1; i < n; ++i)
+            if (fabsl(a[i][k]) > fabsl(a[pivot][k]))
+                pivot = i;
+        if (a[pivot][k] == 0.0L)
+            return 0;
+        for (j = 0; j <= n; ++j) {
+            const long double swap = a[k][j];
+            a[k][j] = a[pivot][j];
+            a[pivot][j] = swap;
+        }
+        for (i = k + 1; i < n; ++i) {
+            const long double factor = a[i][k] / a[k][k];
+            for (j = k; j <= n; ++j)
+                a[i][j] -= factor * a[k][j];
+        }
+    }
+    for (i = n - 1; i >= 0; --i) {
+        long double value = a[i][n];
+        for (j = i + 1; j < n; ++j)
+            value -= a[i][j] * x[j];
+        x[i] = value / a[i][i];
+    }
+    return 1;
+}
+
+/* Every solution of the two-contact problem xi = G P + c under the contact
+ * laws, by enumerating the 16 mode pairs (0 take-off, 1 stick, 2 slip with
+ * xi_T > 0, 3 slip with xi_T < 0) in long double, written independently of
+ * bs_pgs.c. Returns how many mode pairs give a solution; the first goes to
+ * found. Laws are checked to a relative slack of 1e-9. */
+static int enumerate_pair(const double g[4][4], const double *c, const double *mu, double *found)
+{
+    int solutions = 0, modes;
+    for (modes = 0; modes < 16; ++modes) {
+        const int mode[2] = { modes / 4, modes % 4 };
+        long double a[4][5], p[4], xi[4], scale = 0.0L;
+        int i, j, ok = 1;
+        for (i = 0; i < 4; ++i) {
+            const int contact = i / 2, tangential = i % 2;
+            for (j = 0; j < 5; ++j)
+                a[i][j] = 0.0L;
+            if (mode[contact] == 0 || (tangential && mode[contact] != 1)) { /* a law on P */
+                a[i][i] = 1.0L;
+                if (tangential && mode[contact] != 0)
+                    a[i][i - 1] = mode[contact] == 2 ? mu[contact] : -mu[contact];
+            } else { /* xi_i = 0 */
+                for (j = 0; j < 4; ++j)
+                    a[i][j] = g[i][j];
+                a[i][4] = -c[i];
+            }
+        }
+        if (!solve_small(a, 4, p))
+            continue;
+        for (i = 0; i < 4; ++i) {
+            xi[i] = c[i];
+            for (j = 0; j < 4; ++j)
+                xi[i] += g[i][j] * p[j];
+            scale += fabsl(c[i]);
+        }
+        for (i = 0; i < 2 && ok; ++i) {
+            const long double slack = 1e-9L * scale, p_slack = 1e-9L * (fabsl(p[2 * i]) + fabsl(p[2 * i + 1]));
+            switch (mode[i]) {
+            case 0: ok = xi[2 * i] >= -slack; break;
+            case 1: ok = p[2 * i] >= -p_slack && fabsl(p[2 * i + 1]) <= mu[i] * p[2 * i] + p_slack; break;
+            case 2: ok = p[2 * i] >= -p_slack && xi[2 * i + 1] >= -slack; break;
+            default: ok = p[2 * i] >= -p_slack && xi[2 * i + 1] <= slack; break;
+            }
+        }
+        if (ok && solutions++ == 0)
+            for (i = 0; i < 4; ++i)
+                found[i] = (double)p[i];
+    }
+    return solutions;
+}
+
+/* Two corners of one face, as the beam sees them: force directions that
+ * differ by a relative delta (G ~ W W^T has cond ~ 1/delta^2, up to 1e8), a
+ * free velocity into the face, friction from 0.1 to 0.6, tangential motion of
+ * either sign so that stick and both slips occur. The solve must converge
+ * with the default cap of two sweeps, and agree with the enumeration: on the
+ * velocities xi (which the problem determines), and on P where it is unique
+ * and well conditioned enough for the precision. */
+static void test_one_face_pairs_are_solved_exactly(void **state)
+{
+    unsigned long seed = 12345;
+    int id, converged = 0, compared = 0, modes_seen[4] = { 0 };
+    double worst_xi = 0.0;
+    (void)state;
+    for (id = 0; id < 400; ++id) {
+        const double log_cond = 2.0 + 6.0 * (double)(id % 100) / 99.0; /* 1e2 .. 1e8 */
+        const double delta = pow(10.0, -log_cond / 2.0);
+        double w[4][5], g[4][4], c[4], mu[2], p[4], found[4], scale = 0.0, xi_error = 0.0;
+        bs_contact_set set;
+        bs_step_report result;
+        int i, j, k, solutions;
+        for (k = 0; k < 5; ++k) { /* rows of corner 2 = corner 1's + delta * noise */
+            w[0][k] = next_uniform(&seed) - 0.5;
+            w[1][k] = next_uniform(&seed) - 0.5;
+            w[2][k] = w[0][k] + delta * (next_uniform(&seed) - 0.5);
+            w[3][k] = w[1][k] + delta * (next_uniform(&seed) - 0.5);
+        }
+        for (i = 0; i < 4; ++i)
+            for (j = 0; j < 4; ++j)
+                for (g[i][j] = 0.0, k = 0; k < 5; ++k)
+                    g[i][j] += w[i][k] * w[j][k];
+        c[0] = -0.5 - next_uniform(&seed);
+        c[2] = c[0] * (1.0 + 0.1 * (next_uniform(&seed) - 0.5));
+        c[1] = 2.0 * (next_uniform(&seed) - 0.5);
+        c[3] = c[1] + 0.2 * (next_uniform(&seed) - 0.5);
+        mu[0] = mu[1] = 0.1 + 0.5 * next_uniform(&seed);
+        solutions = enumerate_pair(g, c, mu, found);
+        assert_true(solutions >= 1);
+        set.count = 2;
+        for (i = 0; i < 4; ++i) {
+            for (j = 0; j < 4; ++j)
+                set.delassus[i][j] = (bs_real)g[i][j];
+            set.free_velocity[i] = (bs_real)c[i];
+            set.percussion[i] = BS_R(0.0);
+            scale += fabs(c[i]);
+        }
+        set.mu[0] = (bs_real)mu[0];
+        set.mu[1] = (bs_real)mu[1];
+        result = solve(&set, 2, BS_R(1e-5), BS_R(0.0));
+        converged += result.converged == 1;
+        if (result.converged != 1)
+            print_error("case %d (cond 1e%.1f): not converged, residual %.3g\n", id, log_cond,
+                        (double)result.residual);
+        for (i = 0; i < 4; ++i)
+            p[i] = (double)set.percussion[i];
+        for (i = 0; i < 4; ++i) { /* xi of the solver's P against the enumeration's, in double */
+            double mine = c[i], theirs = c[i];
+            for (j = 0; j < 4; ++j) {
+                mine += g[i][j] * p[j];
+                theirs += g[i][j] * found[j];
+            }
+            xi_error = fmax(xi_error, fabs(mine - theirs));
+        }
+        if (solutions == 1) {
+            worst_xi = fmax(worst_xi, xi_error / scale);
+            assert_true(xi_error <= (BS_REAL_FLOAT ? 1e-3 : 1e-7) * scale);
+            if (pow(10.0, log_cond) * SUPPORT_EPS < 1e-4) { /* P itself is determined to 1e-4 */
+                double error = 0.0, norm = 0.0;
+                for (i = 0; i < 4; ++i) {
+                    error += (p[i] - found[i]) * (p[i] - found[i]);
+                    norm += found[i] * found[i];
+                }
+                assert_true(sqrt(error) <= 1e-3 * sqrt(norm) + 1e-12);
+                ++compared;
+            }
+        }
+        for (i = 0; i < 2; ++i) /* which modes the cases reach */
+            ++modes_seen[found[2 * i] <= 0.0 ? 0
+                         : fabs(found[2 * i + 1]) < mu[i] * found[2 * i] * (1.0 - 1e-9) ? 1
+                         : found[2 * i + 1] < 0.0 ? 2 : 3];
+    }
+    print_message("400 one-face pairs, cond 1e2..1e8, %s: %d converged, worst |xi - xi_enum| / |c| = %.2e, "
+                  "%d compared on P; modes off/stick/slip+/slip-: %d/%d/%d/%d\n", BS_REAL_NAME, converged,
+                  worst_xi, compared, modes_seen[0], modes_seen[1], modes_seen[2], modes_seen[3]);
+    assert_int_equal(converged, 400);
+    assert_true(modes_seen[1] > 0 && modes_seen[2] > 0 && modes_seen[3] > 0);
 }
 
 int main(void)
@@ -269,6 +441,7 @@ int main(void)
         cmocka_unit_test(test_residual_formula_matches_independent_one),
         cmocka_unit_test(test_warm_start_from_solution_needs_one_sweep),
         cmocka_unit_test(test_redundant_pair),
+        cmocka_unit_test(test_one_face_pairs_are_solved_exactly),
     };
     return cmocka_run_group_tests(tests, load_cases, free_cases);
 }

@@ -37,9 +37,9 @@ typedef struct bs_solver_options {
     int max_sweeps;          /* cap on Gauss-Seidel sweeps per step, 1 .. BS_SOLVER_MAX_SWEEPS */
     bs_real tol_rel;         /* converged when residual <= tol_rel * scale + tol_abs; >= 0, finite */
     bs_real tol_abs;         /* [N s], >= 0, finite */
-    int measure_residual;    /* 1: the natural-map residual after each sweep, which stops the solve
-                                at the tolerance and drives the subspace step; 0: exactly
-                                max_sweeps plain sweeps, no residual (cheaper, unreported) */
+    int measure_residual;    /* 1: every report carries the natural-map residual of the result;
+                                0: only where the solve needs it anyway (two or more contacts);
+                                a single contact, solved exactly, then reports -1 */
 } bs_solver_options;
 
 /* Largest max_sweeps bs_sim_set_solver accepts. */
@@ -56,9 +56,9 @@ typedef struct bs_step_report {
     unsigned active;         /* bit i set: contact i took part (bits 0-3: P1..P4, 4/5: left/right stop) */
     int sweeps;              /* Gauss-Seidel sweeps used (0 when no contact was active) */
     bs_real residual;        /* natural-map residual of the returned percussions [N s];
-                                -1 when not measured (measure_residual = 0) */
-    int converged;           /* 1: residual <= tol_rel * scale + tol_abs (or no contact);
-                                0: stopped at the cap or stalled above it; -1: not measured */
+                                -1 when not measured (measure_residual = 0, one contact) */
+    int converged;           /* 1: residual <= tol_rel * scale + tol_abs (or no contact; or, not
+                                measured, the single contact's exact solve held); 0: not */
 } bs_step_report;
 
 #endif

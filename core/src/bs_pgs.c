@@ -1,14 +1,19 @@
-/* bs_pgs.c - bounded projected Gauss-Seidel with subspace minimisation for
- * the per-step contact problem.
+/* bs_pgs.c - the per-step contact problem, solved exactly where it is small
+ * and by bounded projected Gauss-Seidel with subspace steps where it is not.
  *
  * Unknowns: percussions P = (P_N,1, P_T,1, ..., P_N,n, P_T,n) [N s] (P_N only
  * when the build has no friction). Velocities after the step (Newton-modified):
  * xi = G P + c, G = W^T M^-1 W. Contact laws for each contact i (docs/model.md 4):
  *   0 <= P_N  _|_  xi_N >= 0,   |P_T| <= mu P_N,   P_T = -mu P_N sign(xi_T) if xi_T != 0.
+ * Each contact is in one of four modes, and the modes turn the laws into
+ * linear equations, rows per contact:
+ *   take-off   P_N = 0, P_T = 0                    (valid if xi_N >= 0)
+ *   stick      xi_N = 0, xi_T = 0                  (valid if P_N >= 0, |P_T| <= mu P_N)
+ *   slip s     xi_N = 0, P_T + s mu P_N = 0        (valid if P_N >= 0, s xi_T >= 0)
  *
- * Gauss-Seidel sweep: visit the contacts in order and solve contact i's 2x2
- * problem exactly with the others frozen: with v = c_i + sum_{j != i} G_ij P_j
- * and the block G_ii = [a b; b d] the candidates are
+ * One contact (most contact steps): the 2x2 problem solved exactly,
+ * solve_contact below: with v = c_i + sum_{j != i} G_ij P_j and the block
+ * G_ii = [a b; b d] the candidates are
  *   take-off   P = 0                                 if v_N >= 0
  *   stick      G_ii P = -v                           if P_N >= 0, |P_T| <= mu P_N
  *   slip s=+-1 P_T = -s mu P_N, P_N = -v_N / (a - s mu b)
@@ -17,47 +22,46 @@
  *   P_i <- prox(P_i - r_i (G_i: P + c_i)),  r_i = 1 / max(a, d),
  * reached in one visit instead of many. The prox update stays as a fall-back
  * for a block where no candidate is consistent (only possible when mu |b| is
- * comparable with a).
+ * comparable with a). The same solve is a Gauss-Seidel sweep's visit of
+ * contact i when there are more.
  *
- * Subspace step: two corners on the same face of the slot see almost the same
- * beam motion, so their rows of G are nearly parallel and Gauss-Seidel crawls
- * (hundreds of sweeps, docs/model.md 9.5). After each sweep that has not converged,
- * the modes the sweep reached (take-off, stick, slip +-) define a linear
- * system, rows per contact:
- *   take-off   P_N = 0, P_T = 0
- *   stick      xi_N = 0, xi_T = 0
- *   slip s     xi_N = 0, P_T + s mu P_N = 0
- * solved directly (Gaussian elimination, partial pivoting, 2n <= 12 unknowns;
- * redundant rows get the basic solution, see subspace_solve).
- * If the solution breaks a law, the first breaching contact moves to the mode
- * the breach points to (Murty's least-index rule: moving all at once can
- * cycle) and the system is solved again, until the laws hold, a mode set
- * repeats or SUBSPACE_TRIES sets were tried; the P with the smallest residual
- * is kept. With the right modes that is the exact solution. (Projected
- * Gauss-Seidel subspace minimisation: Silcowitz, Niebe, Erleben 2010.)
- * A build with BS_WITH_SUBSPACE 0 leaves the step out: each solve is then at
- * most max_sweeps plain sweeps, a hard bound on its cost for a real-time
- * loop, and redundant contacts end the step unconverged (reported).
+ * Two contacts (the rest of the contact steps of the scenes): exact too. Two
+ * corners on the same face of the slot see almost the same beam motion, so
+ * their rows of G are nearly parallel and Gauss-Seidel crawls (hundreds of
+ * sweeps, docs/model.md 9.5). solve_pair does one sweep (its answer is often
+ * exact already), then the active-set method: the modes the sweep reached
+ * define a linear system (Gaussian elimination with partial pivoting,
+ * active_set_solve; redundant rows get the basic solution); if its solution
+ * breaks a law, the first breaching contact moves to the mode the breach
+ * points to (Murty's least-index rule) and the system is solved again; a mode
+ * pair that repeats is replaced by the first one not yet tried. So at most
+ * MODES^2 = 16 systems of 4 unknowns: a hard bound, and with the right modes
+ * the exact solution (Box2D's block solver does the same enumeration for the
+ * two normal rows of a face; here the tangential rows are in the block too).
+ *
+ * Three or more contacts (a preloaded slot): Gauss-Seidel sweeps, each that
+ * has not converged followed by a subspace step (the same active-set method
+ * over all contacts, at most SUBSPACE_TRIES mode sets; projected Gauss-Seidel
+ * subspace minimisation, Silcowitz, Niebe, Erleben 2010), until converged,
+ * the cap max_sweeps, or a sweep that does not lower the residual. A build
+ * with BS_WITH_SUBSPACE 0 leaves the subspace step out: at most max_sweeps
+ * plain sweeps, a harder bound on the cost, and redundant contacts end the
+ * step unconverged (reported).
  *
  * Warm start: P comes in holding each contact's percussion of the last step.
- * Stop: after each sweep (and subspace step) the natural-map residual of the
- * current P,
+ * Residual: the natural-map residual of P,
  *   e = sum_i | P_i - prox(P_i - r_i xi_i) |_1,
- * is computed (1-norms: no square roots; the reference's criterion leaves the
- * norm open); the solve stops when e <= tol_rel s + tol_abs (converged), with
- * the percussion scale s = sum_i r_i |c_i|_1 that would stop each contact's
- * free motion on its own. The reference measures against |P| instead; but
- * redundant contacts (two corners on one face, a preloaded slot) admit
- * internal squeeze that cancels in W P, warm starts let it drift from step to
- * step, and a tolerance relative to |P| then loosens with it until the step
- * diverges. s comes from the data and cannot be inflated that way. The solve
- * also stops when max_sweeps sweeps are done, or when a sweep did not lower e
- * (stalled: e is at the floor the precision reaches for this G). The residual
- * returned is the one of the P returned, whether converged or not
- * (docs/model.md 9.5: report it, never hide it).
- * With measure_residual off the solve is exactly max_sweeps sweeps: no
- * residual, no stop on it, no subspace step (which picks its result by the
- * residual); the report says "not measured" (residual -1, converged -1).
+ * (1-norms: no square roots; the reference's criterion leaves the norm open);
+ * a solve has converged when e <= tol_rel s + tol_abs, with the percussion
+ * scale s = sum_i r_i |c_i|_1 that would stop each contact's free motion on its
+ * own. The reference measures against |P| instead; but redundant contacts (two
+ * corners on one face, a preloaded slot) admit internal squeeze that cancels
+ * in W P, warm starts let it drift from step to step, and a tolerance relative
+ * to |P| then loosens with it until the step diverges. s comes from the data
+ * and cannot be inflated that way. The residual returned is the one of the P
+ * returned, whether converged or not (docs/model.md 9.5: report it, never hide
+ * it). With measure_residual off it is computed only where a solve needs it:
+ * a single contact's exact solve then reports -1 and whether it was exact.
  */
 #include "bs_pgs.h"
 #include "bs_port.h"
@@ -67,6 +71,7 @@
 #define SUBSPACE_TRIES 4 /* mode sets tried per subspace step */
 
 enum { MODE_TAKEOFF, MODE_STICK, MODE_SLIP_POS, MODE_SLIP_NEG }; /* slip +: xi_T > 0, P_T = -mu P_N */
+#define MODES (BS_WITH_FRICTION ? 4 : 2) /* modes a contact can take */
 
 /* xi of contact a's rows with the current P: both rows in one pass over P, a
  * contact's pair of columns at a time; each sum still adds in the order of j. */
@@ -111,8 +116,9 @@ static void prox(const bs_contact_set *set, int a, bs_real step, const bs_real *
 #endif
 }
 
-/* Exact solution of contact a's problem with the other contacts frozen. */
-static void solve_contact(bs_contact_set *set, const bs_real *step, int a)
+/* Exact solution of contact a's problem with the other contacts frozen.
+ * Returns 1, or 0 when it fell back to the prox update (no candidate held). */
+static int solve_contact(bs_contact_set *set, const bs_real *step, int a)
 {
     bs_real *p = &set->percussion[ROWS * a];
     const bs_real g_nn = set->delassus[ROWS * a][ROWS * a];
@@ -133,12 +139,12 @@ static void solve_contact(bs_contact_set *set, const bs_real *step, int a)
         if (v_n >= BS_R(0.0)) { /* take-off */
             p[0] = BS_R(0.0);
             p[1] = BS_R(0.0);
-            return;
+            return 1;
         }
         if (mu == BS_R(0.0)) { /* frictionless contact (a stop): normal only */
             p[0] = -v_n / g_nn;
             p[1] = BS_R(0.0);
-            return;
+            return 1;
         }
         det = g_nn * g_tt - g_nt * g_nt;
         if (det > BS_R(0.0)) {
@@ -148,7 +154,7 @@ static void solve_contact(bs_contact_set *set, const bs_real *step, int a)
             if (p_n >= BS_R(0.0) && p_t <= mu * p_n && p_t >= -mu * p_n) { /* stick */
                 p[0] = p_n;
                 p[1] = p_t;
-                return;
+                return 1;
             }
         }
         /* slip: try first the direction the tangential velocity takes without
@@ -162,16 +168,18 @@ static void solve_contact(bs_contact_set *set, const bs_real *step, int a)
                 if (sign * xi_t >= BS_R(0.0)) {
                     p[0] = p_n;
                     p[1] = -sign * mu * p_n;
-                    return;
+                    return 1;
                 }
             }
         }
         prox(set, a, step[a], xi, p, p); /* fall-back, see the header comment */
+        return 0;
     }
 #else
     (void)step;
     v_n = xi[0] - g_nn * p[0];
     p[0] = v_n >= BS_R(0.0) ? BS_R(0.0) : -v_n / g_nn;
+    return 1;
 #endif
 }
 
@@ -239,7 +247,6 @@ bs_real bs_pgs_scale(const bs_contact_set *set)
     return percussion_scale(set, step);
 }
 
-#if BS_WITH_SUBSPACE
 /* Mode contact a shows at percussion p. */
 static int mode_of(const bs_contact_set *set, int a)
 {
@@ -256,17 +263,18 @@ static int mode_of(const bs_contact_set *set, int a)
     return MODE_STICK;
 }
 
-/* Solves the linear system the modes define into trial, by Gaussian
+/* Solves the linear system the modes define into trial ([A | b] built in m,
+ * rows by ROWS * count), by Gaussian
  * elimination to row echelon form with partial pivoting. A column whose best
  * pivot is below 16 eps of the column's size is taken as dependent on the
  * others (redundant contacts: two corners of one face sticking, a preloaded
  * slot) and its unknown set to 0: the basic solution, instead of one whose
  * huge components cancel in W P and poison the next warm start. Whether the
  * result obeys the contact laws is for the residual to say. */
-static void subspace_solve(bs_contact_set *set, const int *mode, bs_real *trial)
+static void active_set_solve(const bs_contact_set *set, const int *mode, bs_real (*m)[MAX_ROWS + 1],
+                             bs_real *trial)
 {
     const int rows = ROWS * set->count;
-    bs_real (*m)[MAX_ROWS + 1] = set->system; /* [A | b]: scratch in the struct, not on the stack */
     bs_real inverse[MAX_ROWS];         /* 1 / pivot of each echelon row */
     int pivot_column[MAX_ROWS];
     int i, j, col, rank = 0;
@@ -362,7 +370,68 @@ static int correct_modes(const bs_contact_set *set, int *mode, const bs_real *xi
     return 0;
 }
 
-/* Subspace step (see the header comment); keeps the best P seen. */
+/* Two contacts (docs/design.md 6): one sweep, whose answer is often
+ * already the solution (contacts on different faces); else the active-set
+ * method: the modes the sweep reached, then the mode each trial's broken law
+ * points to (Murty's least-index rule), then every mode pair not yet tried, in
+ * a fixed order, until the residual is within the tolerance. At most MODES^2 small
+ * systems, a hard bound on the work; the P with the smallest residual is kept.
+ * The near-parallel rows of two corners on one face, where Gauss-Seidel
+ * crawls, cost nothing extra here. */
+static void solve_pair(bs_contact_set *set, const bs_real *step, bs_real tolerance, bs_step_report *report)
+{
+    bs_real m[2 * ROWS][MAX_ROWS + 1]; /* [A | b] of a pair's 2 ROWS rows */
+    bs_real best[2 * ROWS], trial[2 * ROWS], xi[2 * ROWS];
+    bs_real best_residual, trial_residual;
+    unsigned tried = 0; /* bit MODES * mode[0] + mode[1]: that pair solved */
+    int mode[2], index, j, searching;
+
+    solve_contact(set, step, 0);
+    solve_contact(set, step, 1);
+    report->sweeps = 1;
+    best_residual = residual_of(set, step, xi);
+    for (j = 0; j < 2 * ROWS; ++j)
+        best[j] = set->percussion[j];
+    mode[0] = mode_of(set, 0);
+    mode[1] = mode_of(set, 1);
+    /* the sweep's answer, if within the tolerance, stands */
+    for (searching = best_residual > tolerance; searching;) {
+        index = MODES * mode[0] + mode[1];
+        if (tried >> index & 1u) { /* a repeat: the first pair not yet tried */
+            for (index = 0; index < MODES * MODES && (tried >> index & 1u); ++index)
+                ;
+            if (index == MODES * MODES)
+                break; /* every pair tried: the best one stays */
+            mode[0] = index / MODES;
+            mode[1] = index % MODES;
+        }
+        tried |= 1u << index;
+        active_set_solve(set, mode, m, trial);
+        for (j = 0; j < 2 * ROWS; ++j)
+            set->percussion[j] = trial[j];
+        trial_residual = residual_of(set, step, xi);
+        /* done when the laws hold and the residual is within the tolerance
+         * (within it alone is not enough: at small percussions a cone a few
+         * per cent off can be); else a broken law moves its contact to the
+         * mode it points to, and a repeat (or laws that hold above the
+         * tolerance: a dependent column left an equation unmet) goes on to the
+         * next pair not tried */
+        searching = correct_modes(set, mode, xi) || trial_residual > tolerance;
+        if (!searching || trial_residual < best_residual) {
+            best_residual = trial_residual;
+            for (j = 0; j < 2 * ROWS; ++j)
+                best[j] = trial[j];
+        }
+    }
+    for (j = 0; j < 2 * ROWS; ++j)
+        set->percussion[j] = best[j];
+    report->residual = best_residual;
+    report->converged = best_residual <= tolerance;
+}
+
+#if BS_WITH_SUBSPACE
+/* Subspace step of the sweeps of three or more contacts (see the header
+ * comment); keeps the best P seen. */
 static void try_subspace(bs_contact_set *set, const bs_real *step, bs_real *best_residual)
 {
     const int rows = ROWS * set->count;
@@ -385,7 +454,7 @@ static void try_subspace(bs_contact_set *set, const bs_real *step, bs_real *best
                 seen &= tried[earlier][j] == mode[j];
         if (seen)
             break;
-        subspace_solve(set, mode, trial);
+        active_set_solve(set, mode, set->system, trial);
         for (j = 0; j < set->count; ++j)
             tried[count][j] = mode[j];
         for (j = 0; j < rows; ++j)
@@ -402,42 +471,52 @@ static void try_subspace(bs_contact_set *set, const bs_real *step, bs_real *best
     for (j = 0; j < rows; ++j)
         set->percussion[j] = best[j];
 }
-
 #endif /* BS_WITH_SUBSPACE */
 
-void bs_pgs_solve(bs_contact_set *set, const bs_solver_options *options, bs_step_report *report)
+/* Three or more contacts: Gauss-Seidel sweeps, each followed by the
+ * residual and, if not converged, the subspace step; until converged, the
+ * cap, or a sweep that does not lower the residual. */
+static void solve_sweeps(bs_contact_set *set, const bs_real *step, bs_real tolerance, int max_sweeps,
+                         bs_step_report *report)
 {
-    bs_real step[BS_MAX_CONTACTS];
-    bs_real tolerance;
     bs_real previous = BS_R(0.0);
     int a;
 
-    step_sizes(set, step); /* the prox fall-back of solve_contact needs them too */
     report->sweeps = 0;
-    if (!options->measure_residual) { /* a fixed number of plain sweeps, nothing measured */
-        for (; report->sweeps < options->max_sweeps; ++report->sweeps)
-            for (a = 0; a < set->count; ++a)
-                solve_contact(set, step, a);
-        report->residual = BS_R(-1.0);
-        report->converged = -1;
-        return;
-    }
-    tolerance = options->tol_rel * percussion_scale(set, step) + options->tol_abs;
     for (;;) { /* at least one sweep: the warm start is not trusted unchecked */
         for (a = 0; a < set->count; ++a)
             solve_contact(set, step, a);
         ++report->sweeps;
         report->residual = residual(set, step);
 #if BS_WITH_SUBSPACE
-        if (report->residual > tolerance && set->count > 1)
+        if (report->residual > tolerance)
             try_subspace(set, step, &report->residual);
 #endif
         report->converged = report->residual <= tolerance;
         /* stop at the cap, or when a round made no progress: then the
          * residual sits at what the precision can resolve for this G */
-        if (report->converged || report->sweeps >= options->max_sweeps
+        if (report->converged || report->sweeps >= max_sweeps
             || (report->sweeps > 1 && !(report->residual < previous)))
             return;
         previous = report->residual;
+    }
+}
+
+void bs_pgs_solve(bs_contact_set *set, const bs_solver_options *options, bs_step_report *report)
+{
+    bs_real step[BS_MAX_CONTACTS];
+    bs_real tolerance;
+
+    step_sizes(set, step);
+    tolerance = options->tol_rel * percussion_scale(set, step) + options->tol_abs;
+    if (set->count == 1) { /* exact by itself: the residual only when asked */
+        const int exact = solve_contact(set, step, 0);
+        report->sweeps = 1;
+        report->residual = options->measure_residual ? residual(set, step) : BS_R(-1.0);
+        report->converged = options->measure_residual ? report->residual <= tolerance : exact;
+    } else if (set->count == 2) {
+        solve_pair(set, step, tolerance, report);
+    } else {
+        solve_sweeps(set, step, tolerance, options->max_sweeps, report);
     }
 }

@@ -84,7 +84,7 @@ extern const char *const scene_integrators[];  /* explicit, implicit */
     X(REAL, "solver", "tol_abs", solver_tol_abs, OWN, 0, HUGE_VAL, 0, 1, SCENE_TEXT_OF(BS_SOLVER_DEFAULT_TOL_ABS), \
       "N s", "absolute tolerance of the contact solve", 0)                                                  \
     X(CHOICE, "solver", "residual", solver_residual, OWN, 0, 0, 0, 0, "on", "",                               \
-      "on | off: measure the residual after each sweep (off: exactly max_sweeps sweeps)", scene_switches)    \
+      "on | off: report the residual of every contact step (off: only where the solve needs it)", scene_switches)    \
     X(REAL, "run", "s0", s0, OWN, 0, 1, 0, 0, 0, "", "start position x_C / L (PCS: prescribed position)", 0)   \
     X(REAL, "run", "t_end", t_end, OWN, 0, HUGE_VAL, 1, 1, 0, "s", "simulated time", 0)                        \
     X(CHOICE, "run", "model", model, OWN, 0, 0, 0, 0, 0, "", "free | pcs (the model variant, bs_model)", scene_models)
