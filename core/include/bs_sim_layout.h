@@ -34,12 +34,17 @@ typedef struct bs_contact_set {
 #endif
 } bs_contact_set;
 
-/* Bounds on the mode shapes that let a step skip evaluating a slot corner
- * which is certainly open (core/src/bs_contact.c); computed once by bs_sim_init. */
-typedef struct bs_shape_bound {
-    bs_real slope[BS_MAX_MODES];       /* >= max |phi_k'| on [0, L] [1/(m sqrt(kg))] */
-    bs_real jump[BS_MAX_MODES];        /* piece mismatch and rounding of phi_k [1/sqrt(kg)] */
-} bs_shape_bound;
+/* The mode shapes near one side of the slot, expanded once and used while
+ * the slider stays within reach (core/src/bs_shape.c): the two corners of a
+ * side lie micrometres apart along the beam and move slowly. */
+/* Terms of the expansion: cubic in float, quartic in double (its error must
+ * stay under the double fit's 1e-9 too; core/src/bs_shape.c). */
+#define BS_SHAPE_TERMS (BS_REAL_FLOAT ? 4 : 5)
+
+typedef struct bs_shape_cache {
+    bs_real centre;                    /* x of the expansion [m]; below 0: empty */
+    bs_real coef[BS_MAX_MODES][BS_SHAPE_TERMS]; /* phi_k = sum_m coef[k][m] t^m, t in the pieces' local units */
+} bs_shape_cache;
 
 typedef struct bs_sim {
     uint32_t ready;                    /* BS_SIM_READY after a successful bs_sim_init, else not */
@@ -57,7 +62,8 @@ typedef struct bs_sim {
     bs_real percussion[BS_MAX_CONTACTS][BS_ROWS]; /* last step's percussions, warm start */
     bs_step_report report;
     bs_contact_set contacts;
-    bs_shape_bound shape_bound;
+    bs_shape_cache side[2];            /* mode shapes about the left (P1, P2) and right (P4, P3) corners */
+    bs_real shape_reach;               /* how far they serve (core/src/bs_shape.c) */
     bs_real stretch_rows[BS_MAX_MODES]; /* sum_j |S_ij|, for the stability bound (core/src/bs_beam.c) */
 } bs_sim;
 

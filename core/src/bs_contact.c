@@ -24,10 +24,12 @@
  * Without friction only the normal row exists; with the rotation locked the
  * beta column does not.
  *
- * A bottom corner is not evaluated when bounds on the mode shapes prove it open
- * from the beam under the top corner of its side (certainly_open; the play
- * leaves one of the two well clear): the same contacts, bit for bit, with
- * fewer shape evaluations (docs/design.md 5).
+ * The beam under the corners: the two corners of a side share a Taylor
+ * expansion of the mode shapes (bs_shape.c), and with the expansion's
+ * coefficients b[k][m] the deflection there is
+ *   w = sum_m s_m t^m,   s_m = sum_k q_k b[k][m],   w' = 2 shape_scale dw/dt,
+ * BS_SHAPE_TERMS sums over the modes for both corners of a side; the per-mode
+ * phi_k and phi_k' that the force directions need only for a corner in contact.
  *
  * Clamp end stops (docs/model.md 9.6): frictionless unilateral contacts on x_C,
  * g = x_C - stop_min (left) and g = stop_max - x_C (right), W = (0, +-1, 0, 0).
@@ -50,13 +52,13 @@
 #include "bs_port.h"
 #include "bs_shape.h"
 
-/* A slot corner at the midpoint and, once evaluated, the beam under it. */
+/* A slot corner at the midpoint and the beam under it. */
 typedef struct corner_point {
     bs_real arm_x, arm_z;          /* A rho */
     bs_real x, z;                  /* r_P */
-    bs_real w, w_slope;            /* w and w' at x */
-    bs_real phi[BS_MAX_MODES];
-    bs_real slope[BS_MAX_MODES];
+    bs_real t;                     /* local offset from its side's expansion */
+    bs_real w, w_slope;            /* w and w' at x (0 inside a clamp) */
+    int on_beam;                   /* x within [0, L] */
 } corner_point;
 
 static bs_real corner_zeta(int corner)
@@ -72,40 +74,41 @@ static void locate_corner(const bs_scene *scene, const bs_contact_frame *frame, 
     p->arm_z = -sin_beta * rho[0] + cos_beta * rho[1];
     p->x = frame->x_kinematic + p->arm_x;
     p->z = frame->z + p->arm_z;
+    p->on_beam = p->x >= BS_R(0.0) && p->x <= scene->length;
 }
 
-static void beam_under_corner(const bs_scene *scene, const bs_contact_frame *frame, corner_point *p)
+/* w and w' at corner p from its side's sums s_m (0 inside a clamp, which
+ * moves with the base). */
+static void deflection_at(const bs_real *sum, bs_real slope_scale, corner_point *p)
 {
-    bs_shape_deflection(scene, p->x, frame->q_beam, p->phi, p->slope, &p->w, &p->w_slope);
+    bs_real w, dw;
+    bs_shape_taylor(sum, p->t, &w, &dw);
+    p->w = p->on_beam ? w : BS_R(0.0);
+    p->w_slope = p->on_beam ? slope_scale * dw : BS_R(0.0);
 }
 
-/* 1 if corner `other` (located, not evaluated) is certainly open, judged from
- * the beam under the evaluated corner p on the same side of the slot. The two
- * lie |beta| times the slot height apart along the beam, so
- *   |w_other - w_p| <= change = sum |q_k| (slope_k |dx| + jump_k),
- *   |w'_other| <= q_slope = sum |q_k| slope_k.
- * If zeta d_z - h/2 w'^2 of `other` (the sign of its g_N, see add_corner)
- * stays positive under the worst of these by more than its rounding,
- * evaluating it would find it open too: skipping it changes no result. The
- * play keeps one corner of each side at least about half the play (25 um)
- * open, which is what this finds. */
-static int certainly_open(const bs_scene *scene, const bs_contact_frame *frame, bs_real zeta,
-                          const corner_point *p, const corner_point *other,
-                          bs_real q_slope, bs_real q_jump)
+/* The beam under the two corners of one side from the side's expansion,
+ * expanded anew at their midpoint when either is out of its reach. */
+static void beam_under_side(const bs_scene *scene, const bs_real *q, bs_real reach, bs_shape_cache *cache,
+                            corner_point *top, corner_point *bottom)
 {
-    const bs_real hh = scene->half_thickness;
-    const bs_real dx = bs_fabs(other->x - p->x);
-    bs_real change, worst, rounding;
+    bs_real sum[BS_SHAPE_TERMS];
+    int k, m;
 
-    if (!(p->x >= BS_R(0.0) && p->x <= scene->length && other->x >= BS_R(0.0)
-          && other->x <= scene->length && dx * scene->shape_scale < BS_R(1.0)))
-        return 0; /* a clamp or more than one piece boundary between them */
-    change = q_slope * dx + q_jump;
-    worst = zeta * (other->z - frame->base.displacement - p->w - zeta * hh) - change
-            - hh * q_slope * q_slope;
-    rounding = BS_R(64.0) * BS_REAL_EPS * (bs_fabs(other->z) + bs_fabs(frame->base.displacement)
-                                          + bs_fabs(p->w) + hh + change + hh * q_slope * q_slope);
-    return worst > rounding;
+    top->t = bs_shape_offset(scene, cache, top->x);
+    bottom->t = bs_shape_offset(scene, cache, bottom->x);
+    if (!(bs_fabs(top->t) <= reach && bs_fabs(bottom->t) <= reach)) {
+        bs_shape_expand(scene, BS_R(0.5) * (top->x + bottom->x), cache);
+        top->t = bs_shape_offset(scene, cache, top->x);
+        bottom->t = bs_shape_offset(scene, cache, bottom->x);
+    }
+    for (m = 0; m < BS_SHAPE_TERMS; ++m)
+        sum[m] = BS_R(0.0);
+    for (k = 0; k < BS_NMODES(scene); ++k)
+        for (m = 0; m < BS_SHAPE_TERMS; ++m)
+            sum[m] += q[k] * cache->coef[k][m];
+    deflection_at(sum, BS_R(2.0) * scene->shape_scale, top);
+    deflection_at(sum, BS_R(2.0) * scene->shape_scale, bottom);
 }
 
 /* Appends the evaluated corner to the active set if g_N < 0. Returns 1 if
@@ -113,15 +116,14 @@ static int certainly_open(const bs_scene *scene, const bs_contact_frame *frame, 
  * than h/2 into the beam, which no step of a held contact reaches; the slider
  * has left the beam), else 0. */
 static int add_corner(const bs_scene *scene, const bs_contact_frame *frame, int corner,
-                       const corner_point *p, bs_contact_set *set,
-                       bs_real base_term[BS_MAX_CONTACTS][BS_ROWS])
+                      const corner_point *p, bs_contact_set *set,
+                      bs_real base_term[BS_MAX_CONTACTS][BS_ROWS])
 {
     const int n = BS_NMODES(scene);
     const bs_real zeta = corner_zeta(corner);
     const bs_real hh = scene->half_thickness;
     const bs_real w_slope = p->w_slope;
-    const bs_real *phi = p->phi;
-    const bs_real *slope = p->slope;
+    bs_real phi[BS_MAX_MODES], slope[BS_MAX_MODES];
     bs_real cos_alpha, sin_alpha, n_x, n_z, d_x, d_z, gap_n, a1, a2, coef_nn, coef_ns;
     int a;
     int k;
@@ -132,6 +134,7 @@ static int add_corner(const bs_scene *scene, const bs_contact_frame *frame, int 
         return 0;
     if (zeta * d_z + hh < BS_R(0.0))
         return 1;
+    bs_shape_expanded(scene, &frame->cache[corner == 0 || corner == 1 ? 0 : 1], p->t, p->on_beam, phi, slope);
     cos_alpha = BS_R(1.0) / bs_sqrt(BS_R(1.0) + w_slope * w_slope);
     sin_alpha = w_slope * cos_alpha;
     n_x = -zeta * sin_alpha;
@@ -221,36 +224,19 @@ bs_status bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame
                             bs_contact_set *set, bs_real base_term[BS_MAX_CONTACTS][BS_ROWS])
 {
     bs_real cos_beta = BS_R(1.0), sin_beta = BS_R(0.0);
-    bs_real q_slope = BS_R(0.0), q_jump = BS_R(0.0);
     corner_point at[BS_CORNERS];
-    int open[BS_CORNERS];              /* 1: skipped, certainly open */
-    int corner, side, k;
+    int corner;
 
 #if BS_WITH_ROTATION
     rotation(frame->beta, &cos_beta, &sin_beta);
 #endif
-    if (frame->shape_bound)
-        for (k = 0; k < BS_NMODES(scene); ++k) {
-            const bs_real size = bs_fabs(frame->q_beam[k]);
-            q_slope += size * frame->shape_bound->slope[k];
-            q_jump += size * frame->shape_bound->jump[k];
-        }
     set->count = 0;
     for (corner = 0; corner < BS_CORNERS; ++corner)
         locate_corner(scene, frame, corner, cos_beta, sin_beta, &at[corner]);
-    /* the two top corners back to back: independent Horner chains the processor overlaps */
-    beam_under_corner(scene, frame, &at[0]);
-    beam_under_corner(scene, frame, &at[3]);
-    for (side = 0; side < 2; ++side) { /* P2 judged from P1, P3 from P4 */
-        const int top = side ? 3 : 0, bottom = side ? 2 : 1;
-        open[top] = 0;
-        open[bottom] = frame->shape_bound
-                       && certainly_open(scene, frame, BS_R(-1.0), &at[top], &at[bottom], q_slope, q_jump);
-        if (!open[bottom])
-            beam_under_corner(scene, frame, &at[bottom]);
-    }
+    beam_under_side(scene, frame->q_beam, frame->reach, &frame->cache[0], &at[0], &at[1]); /* P1, P2 */
+    beam_under_side(scene, frame->q_beam, frame->reach, &frame->cache[1], &at[3], &at[2]); /* P4, P3 */
     for (corner = 0; corner < BS_CORNERS; ++corner)
-        if (!open[corner] && add_corner(scene, frame, corner, &at[corner], set, base_term))
+        if (add_corner(scene, frame, corner, &at[corner], set, base_term))
             return BS_E_ESCAPED;
     if (frame->stops) {
         if (frame->x_stops < scene->stop_min)

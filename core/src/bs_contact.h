@@ -19,7 +19,8 @@ typedef struct bs_contact_frame {
     bs_real beta;           /* [rad] */
     int stops;              /* 1: clamp end stops take part */
     bs_base base;           /* base motion */
-    const bs_shape_bound *shape_bound; /* lets certainly open corners be skipped; NULL: evaluate all */
+    bs_shape_cache *cache;  /* the mode shapes about the left and right corners (2; updated) */
+    bs_real reach;          /* of the expansions (bs_shape_reach) */
 } bs_contact_frame;
 
 /* Finds the contacts with g_N < 0 and fills set->count, id, mu (with

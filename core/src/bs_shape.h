@@ -1,5 +1,6 @@
 /* bs_shape.h - mode shapes phi_k(x) and their slopes from the scene's
- * piecewise polynomials. */
+ * piecewise polynomials: evaluated directly, or from a local Taylor
+ * expansion that the contact detection keeps per side of the slot. */
 #ifndef BS_SHAPE_H
 #define BS_SHAPE_H
 
@@ -14,9 +15,46 @@ void bs_shape_eval(const bs_scene *scene, bs_real x, bs_real *phi, bs_real *slop
 void bs_shape_deflection(const bs_scene *scene, bs_real x, const bs_real *q, bs_real *phi,
                          bs_real *slope, bs_real *w, bs_real *w_slope);
 
-/* Fills bound for the scene's shapes, so that for x1, x2 in [0, L] less than
- * a piece apart the values bs_shape_eval returns obey
- *   |phi_k(x2) - phi_k(x1)| <= slope[k] |x2 - x1| + jump[k],   |phi_k'| <= slope[k]. */
-void bs_shape_bounds(const bs_scene *scene, bs_shape_bound *bound);
+/* Largest distance, in the pieces' local units (2 per piece), over which an
+ * expansion is used, and the error allowed there relative to a mode's size
+ * (below the fit's own: docs/design.md 3). */
+#define BS_SHAPE_REACH BS_R(0.0625)
+#define BS_SHAPE_ERROR (BS_REAL_FLOAT ? BS_R(1e-7) : BS_R(1e-10))
+
+/* The reach of this scene's expansions (<= BS_SHAPE_REACH), once per run. */
+bs_real bs_shape_reach(const bs_scene *scene);
+
+/* Local coordinate of x relative to the expansion's centre,
+ * t = 2 shape_scale (x - centre); the expansion serves x while |t| is within
+ * the scene's reach. */
+static inline bs_real bs_shape_offset(const bs_scene *scene, const bs_shape_cache *cache, bs_real x)
+{
+    return BS_R(2.0) * scene->shape_scale * (x - cache->centre);
+}
+
+/* Expands every mode about x (clamped to [0, L]) into cache: the Taylor
+ * polynomial in t (BS_SHAPE_TERMS terms) of the piece polynomial there. */
+void bs_shape_expand(const bs_scene *scene, bs_real x, bs_shape_cache *cache);
+
+/* Value and t-derivative of sum_m c_m t^m, m < BS_SHAPE_TERMS (Horner). */
+static inline void bs_shape_taylor(const bs_real *c, bs_real t, bs_real *value, bs_real *derivative)
+{
+    bs_real v = c[BS_SHAPE_TERMS - 1], d = BS_R(0.0);
+    int m;
+    for (m = BS_SHAPE_TERMS - 2; m >= 0; --m) {
+        d = d * t + v;
+        v = v * t + c[m];
+    }
+    *value = v;
+    *derivative = d;
+}
+
+/* phi[k] and slope[k] as bs_shape_eval gives them, from the expansion at
+ * offset t (bs_shape_offset); 0 when on_beam is 0 (inside a clamp). */
+void bs_shape_expanded(const bs_scene *scene, const bs_shape_cache *cache, bs_real t, int on_beam, bs_real *phi,
+                       bs_real *slope);
+
+/* Marks the cache empty: the next use expands it. */
+void bs_shape_forget(bs_shape_cache *cache);
 
 #endif

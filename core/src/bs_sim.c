@@ -82,7 +82,9 @@ bs_status bs_sim_init_(uint32_t tag, size_t sim_size, size_t scene_size, bs_sim 
     sim->report.residual = BS_R(0.0);
     sim->report.converged = 1;
     sim->contacts.count = 0;
-    bs_shape_bounds(scene, &sim->shape_bound);
+    bs_shape_forget(&sim->side[0]);
+    bs_shape_forget(&sim->side[1]);
+    sim->shape_reach = bs_shape_reach(scene);
     bs_beam_stretch_rows(scene, sim->stretch_rows);
     sim->ready = BS_SIM_READY;
     return BS_OK;

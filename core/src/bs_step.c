@@ -121,7 +121,8 @@ static bs_status find_contacts(bs_sim *sim, step_state *s)
     frame.beta = s->slider[2];
     frame.stops = sim->model == BS_MODEL_FREE;
     frame.base = s->base;
-    frame.shape_bound = &sim->shape_bound;
+    frame.cache = sim->side;
+    frame.reach = sim->shape_reach;
     return bs_contact_detect(sim->scene, &frame, &sim->contacts, s->base_term);
 }
 
