@@ -218,7 +218,9 @@ static void test_warm_start_from_solution_needs_one_sweep(void **state)
             set.percussion[i] = (bs_real)expected[i];
         result = solve(&set, 50, BS_R(1e-5), BS_R(0.0));
         assert_true(result.converged);
-        assert_int_equal(result.sweeps, 1);
+        if (result.sweeps + result.systems > 1)
+            print_error("case %d (n = %d): %d sweeps, %d systems\n", id, n, result.sweeps, result.systems);
+        assert_true(result.sweeps + result.systems <= 1); /* at most one sweep or (2+ contacts) system */
     }
 }
 

@@ -38,11 +38,11 @@ static const char good_scene[] = "[scene]\nbase = mssp2023.ini\n[excitation]\nfr
 static const char *const run_keys[] = {
     "scene", "model", "precision", "modes", "dt", "status", "t_end", "steps", "s0", "s_final", "s_min",
     "t_s_min", "amp_final_h", "amp_periods", "wall_s", "steps_per_s", "max_pgs_iters", "unconverged_steps",
-    "contact_steps", "mean_pgs_iters", "hash", "version", "revision", NULL };
+    "contact_steps", "mean_pgs_iters", "max_systems", "mean_systems", "hash", "version", "revision", NULL };
 static const char *const sweep_keys[] = {
     "scene", "command", "dir", "precision", "modes", "dt", "status", "from", "to", "step", "hold", "record",
     "points", "steps", "wall_s", "steps_per_s", "max_pgs_iters", "unconverged_steps", "contact_steps",
-    "mean_pgs_iters", "version", "revision", NULL };
+    "mean_pgs_iters", "max_systems", "mean_systems", "version", "revision", NULL };
 
 static void write_file(const char *path, const char *text)
 {
@@ -216,10 +216,12 @@ static void test_run_summary_keeps_the_number_formats(void **state)
     r.amp_final_h = 1.235241;
     r.amp_periods = 25;
     r.wall_s = 2.359;
-    r.max_pgs_sweeps = 2;
-    r.unconverged_steps = 13;
-    r.contact_steps = 2713455;
-    r.total_sweeps = 2721596;
+    r.solve.max_sweeps = 2;
+    r.solve.unconverged_steps = 13;
+    r.solve.contact_steps = 2713455;
+    r.solve.sweeps = 2721596;
+    r.solve.max_systems = 8;
+    r.solve.systems = 436006;
     r.hash = 0xa75df610u;
     capture(summary_print_run(out_, &params, &scene, &r));
     snprintf(expected, sizeof expected,
@@ -227,7 +229,8 @@ static void test_run_summary_keeps_the_number_formats(void **state)
              "\"status\":\"ok\",\"t_end\":60,\"steps\":3000000,\"s0\":0.3,\"s_final\":0.331294145,"
              "\"s_min\":0.258502209,\"t_s_min\":9.290160,\"amp_final_h\":1.23524,\"amp_periods\":25,"
              "\"wall_s\":2.359,\"steps_per_s\":1.272e+06,\"max_pgs_iters\":2,\"unconverged_steps\":13,"
-             "\"contact_steps\":2713455,\"mean_pgs_iters\":1.003,\"hash\":\"a75df610\",\"version\":\"%s\","
+             "\"contact_steps\":2713455,\"mean_pgs_iters\":1.003,\"max_systems\":8,\"mean_systems\":0.1607,"
+             "\"hash\":\"a75df610\",\"version\":\"%s\","
              "\"revision\":\"%s\"}\n", BS_REAL_NAME, BS_VERSION_STRING, BS_REVISION);
     assert_string_equal(line, expected);
     root = parse_summary(run_keys);
@@ -287,15 +290,18 @@ static void test_sweep_summary_is_json_with_its_formats(void **state)
     r.points_done = 101;
     r.steps = 5000000;
     r.wall_s = 3.25;
-    r.max_sweeps = 2;
-    r.contact_steps = 4;
-    r.total_sweeps = 5;
+    r.solve.max_sweeps = 2;
+    r.solve.contact_steps = 4;
+    r.solve.sweeps = 5;
+    r.solve.max_systems = 3;
+    r.solve.systems = 3;
     capture(summary_print_sweep(out_, &params, &scene, &o, &r));
     snprintf(expected, sizeof expected,
              "{\"scene\":\"sw\\\"eep\\\\\\u001f\",\"command\":\"sweep\",\"dir\":\"up\",\"precision\":\"%s\","
              "\"modes\":5,\"dt\":2e-05,\"status\":\"ok\",\"from\":0,\"to\":0.5,\"step\":0.005,\"hold\":100,"
              "\"record\":25,\"points\":101,\"steps\":5000000,\"wall_s\":3.25,\"steps_per_s\":1.538e+06,"
              "\"max_pgs_iters\":2,\"unconverged_steps\":0,\"contact_steps\":4,\"mean_pgs_iters\":1.25,"
+             "\"max_systems\":3,\"mean_systems\":0.75,"
              "\"version\":\"%s\",\"revision\":\"%s\"}\n",
              BS_REAL_NAME, BS_VERSION_STRING, BS_REVISION);
     assert_string_equal(line, expected);

@@ -54,7 +54,9 @@ typedef struct bs_solver_options {
 /* What the contact solve of the last step did. */
 typedef struct bs_step_report {
     unsigned active;         /* bit i set: contact i took part (bits 0-3: P1..P4, 4/5: left/right stop) */
-    int sweeps;              /* Gauss-Seidel sweeps used (0 when no contact was active) */
+    int sweeps;              /* Gauss-Seidel sweeps used (0 when no contact was active, or when
+                                three or more were solved from the warm start's modes) */
+    int systems;             /* linear systems of the active-set method solved (two or more contacts) */
     bs_real residual;        /* natural-map residual of the returned percussions [N s];
                                 -1 when not measured (measure_residual = 0, one contact) */
     int converged;           /* 1: residual <= tol_rel * scale + tol_abs (or no contact; or, not

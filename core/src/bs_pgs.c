@@ -30,22 +30,36 @@
  * their rows of G are nearly parallel and Gauss-Seidel crawls (hundreds of
  * sweeps, docs/model.md 9.5). solve_pair does one sweep (its answer is often
  * exact already), then the active-set method: the modes the sweep reached
- * define a linear system (Gaussian elimination with partial pivoting,
- * active_set_solve; redundant rows get the basic solution); if its solution
- * breaks a law, the first breaching contact moves to the mode the breach
- * points to (Murty's least-index rule) and the system is solved again; a mode
- * pair that repeats is replaced by the first one not yet tried. So at most
- * MODES^2 = 16 systems of 4 unknowns: a hard bound, and with the right modes
- * the exact solution (Box2D's block solver does the same enumeration for the
- * two normal rows of a face; here the tangential rows are in the block too).
+ * define a linear system in the unknowns they leave free (Gaussian
+ * elimination with partial pivoting, active_set_solve; redundant rows get the
+ * basic solution); if its solution breaks a law, next_modes picks the modes
+ * of the next trial (below) and the system is solved again; a mode pair that
+ * repeats is replaced by the first one not yet tried. So at most MODES^2 = 16
+ * systems of at most 4 unknowns: a hard bound, and with the right modes the
+ * exact solution (Box2D's block solver does the same enumeration for the two
+ * normal rows of a face; here the tangential rows are in the block too).
  *
- * Three or more contacts (a preloaded slot): Gauss-Seidel sweeps, each that
- * has not converged followed by a subspace step (the same active-set method
- * over all contacts, at most SUBSPACE_TRIES mode sets; projected Gauss-Seidel
- * subspace minimisation, Silcowitz, Niebe, Erleben 2010), until converged,
- * the cap max_sweeps, or a sweep that does not lower the residual. A build
- * with BS_WITH_SUBSPACE 0 leaves the subspace step out: at most max_sweeps
- * plain sweeps, a harder bound on the cost, and redundant contacts end the
+ * Next modes: a breach on the percussion's side (P_N < 0, P_T outside the
+ * cone) is the surest sign of a wrong mode, so every contact with one moves;
+ * failing those, only the contact with the largest velocity breach (xi_N < 0
+ * lifting off, xi_T against its slip) moves, since velocities depend on every
+ * contact's P and two corners of one face often breach together when only
+ * one is wrong. A moving contact takes the mode of its own exact solution
+ * with the others held at the trial's P (the mode its breach points to if
+ * that is its present one). On fig6 this needs 1.27 systems per two-contact
+ * step on average and at most 8 (docs/design.md 6).
+ *
+ * Three or more contacts (a preloaded slot, all four corners and a stop):
+ * the same active-set method over all contacts, started from the warm
+ * start's modes (a contact new to the set: sticking if it approaches, else
+ * lifting off); in a lasting contact the first system is the right one. If
+ * none meets the laws, Gauss-Seidel sweeps, each followed by the active-set
+ * method from the modes the sweep reached, until converged, the cap
+ * max_sweeps, or a sweep that does not lower the residual; SYSTEMS_MAX
+ * systems of at most 2n unknowns per step in all, a hard bound on the work.
+ * (Projected Gauss-Seidel with subspace minimisation: Silcowitz, Niebe,
+ * Erleben 2010.) A build with BS_WITH_SUBSPACE 0 leaves the active-set step
+ * out here: at most max_sweeps plain sweeps, and redundant contacts end the
  * step unconverged (reported).
  *
  * Warm start: P comes in holding each contact's percussion of the last step.
@@ -68,9 +82,18 @@
 
 #define ROWS BS_ROWS
 #define MAX_ROWS (BS_ROWS * BS_MAX_CONTACTS)
-#define SUBSPACE_TRIES 4 /* mode sets tried per subspace step */
+#define SYSTEMS_MAX 4 /* systems per step for three or more contacts */
 
 enum { MODE_TAKEOFF, MODE_STICK, MODE_SLIP_POS, MODE_SLIP_NEG }; /* slip +: xi_T > 0, P_T = -mu P_N */
+
+/* When a solve is done: a residual within tolerance (tol_rel s + tol_abs);
+ * for a trial of the active-set method also the laws holding by sign, unless
+ * its residual is at the floor of rounding (exact, 64 eps s), where the
+ * signs of values at a law's boundary are themselves rounding. */
+typedef struct bs_goal {
+    bs_real tolerance;
+    bs_real exact;
+} bs_goal;
 #define MODES (BS_WITH_FRICTION ? 4 : 2) /* modes a contact can take */
 
 /* xi of contact a's rows with the current P: both rows in one pass over P, a
@@ -263,77 +286,101 @@ static int mode_of(const bs_contact_set *set, int a)
     return MODE_STICK;
 }
 
-/* Solves the linear system the modes define into trial ([A | b] built in m,
- * rows by ROWS * count), by Gaussian
- * elimination to row echelon form with partial pivoting. A column whose best
- * pivot is below 16 eps of the column's size is taken as dependent on the
- * others (redundant contacts: two corners of one face sticking, a preloaded
- * slot) and its unknown set to 0: the basic solution, instead of one whose
- * huge components cancel in W P and poison the next warm start. Whether the
- * result obeys the contact laws is for the residual to say. */
+/* Solves the linear system the modes define into trial, condensed to the
+ * unknowns the modes leave free: a sticking contact has P_N and P_T (equations
+ * xi_N = 0, xi_T = 0), a slipping one P_N alone (P_T = -s mu P_N folded into
+ * its column: G_:N - s mu G_:T; equation xi_N = 0), one lifting off none
+ * (P = 0). So k <= ROWS n unknowns; [A | b] is built in m (k rows) and
+ * brought to row echelon form by Gaussian elimination with partial pivoting.
+ * A column whose best pivot is below 16 eps of the column's size is taken as
+ * dependent on the others (redundant contacts: two corners of one face
+ * sticking, a preloaded slot) and its unknown set to 0: the basic solution,
+ * instead of one whose huge components cancel in W P and poison the next
+ * warm start. Whether the result obeys the contact laws is for the residual
+ * to say. */
 static void active_set_solve(const bs_contact_set *set, const int *mode, bs_real (*m)[MAX_ROWS + 1],
                              bs_real *trial)
 {
-    const int rows = ROWS * set->count;
-    bs_real inverse[MAX_ROWS];         /* 1 / pivot of each echelon row */
+    int row[MAX_ROWS];          /* row (and column) of G of each unknown */
+    bs_real fold[MAX_ROWS];     /* P_T / P_N of a slipping contact's unknown, else 0 */
+    bs_real inverse[MAX_ROWS];  /* 1 / pivot of each echelon row */
+    bs_real unknown[MAX_ROWS];
     int pivot_column[MAX_ROWS];
-    int i, j, col, rank = 0;
+    int a, i, j, col, k = 0, rank = 0;
 
-    for (i = 0; i < ROWS * set->count; ++i) { /* rows of a law on P alone */
-        const int a = i / ROWS;
-        if (mode[a] == MODE_TAKEOFF || (i % ROWS && mode[a] != MODE_STICK)) {
-            for (j = 0; j <= rows; ++j)
-                m[i][j] = BS_R(0.0);
-            m[i][i] = BS_R(1.0);
+    for (a = 0; a < set->count; ++a) {
+        if (mode[a] == MODE_TAKEOFF)
+            continue;
+        row[k] = ROWS * a;
+        fold[k++] = BS_R(0.0);
 #if BS_WITH_FRICTION
-            if (i % ROWS && mode[a] != MODE_TAKEOFF) /* slip: P_T + s mu P_N = 0 */
-                m[i][i - 1] = mode[a] == MODE_SLIP_POS ? set->mu[a] : -set->mu[a];
-#endif
-        } else { /* xi = 0 */
-            for (j = 0; j < rows; ++j)
-                m[i][j] = set->delassus[i][j];
-            m[i][rows] = -set->free_velocity[i];
+        if (mode[a] == MODE_STICK) {
+            row[k] = ROWS * a + 1;
+            fold[k++] = BS_R(0.0);
+        } else {
+            fold[k - 1] = mode[a] == MODE_SLIP_POS ? -set->mu[a] : set->mu[a];
         }
+#endif
     }
-    for (col = 0; col < rows && rank < rows; ++col) {
+    for (i = 0; i < k; ++i) {
+        const bs_real *g = set->delassus[row[i]];
+        for (j = 0; j < k; ++j) {
+            m[i][j] = g[row[j]];
+#if BS_WITH_FRICTION
+            if (fold[j] != BS_R(0.0))
+                m[i][j] += fold[j] * g[row[j] + 1];
+#endif
+        }
+        m[i][k] = -set->free_velocity[row[i]];
+    }
+    for (col = 0; col < k && rank < k; ++col) {
         bs_real size = BS_R(0.0);
         int pivot = rank;
-        for (i = 0; i < rows; ++i)
+        for (i = 0; i < k; ++i)
             size += bs_fabs(m[i][col]);
-        for (i = rank + 1; i < rows; ++i)
+        for (i = rank + 1; i < k; ++i)
             if (bs_fabs(m[i][col]) > bs_fabs(m[pivot][col]))
                 pivot = i;
         if (!(bs_fabs(m[pivot][col]) > BS_R(16.0) * BS_REAL_EPS * size))
             continue; /* dependent column: its unknown stays 0 */
         if (pivot != rank)
-            for (j = col; j <= rows; ++j) {
+            for (j = col; j <= k; ++j) {
                 const bs_real swap = m[rank][j];
                 m[rank][j] = m[pivot][j];
                 m[pivot][j] = swap;
             }
         inverse[rank] = BS_R(1.0) / m[rank][col]; /* one division per pivot */
-        for (i = rank + 1; i < rows; ++i) {
+        for (i = rank + 1; i < k; ++i) {
             const bs_real factor = m[i][col] * inverse[rank];
-            for (j = col; j <= rows; ++j)
+            for (j = col; j <= k; ++j)
                 m[i][j] -= factor * m[rank][j];
         }
         pivot_column[rank++] = col;
     }
-    for (j = 0; j < rows; ++j)
-        trial[j] = BS_R(0.0);
+    for (j = 0; j < k; ++j)
+        unknown[j] = BS_R(0.0);
     for (i = rank - 1; i >= 0; --i) {
         const int c = pivot_column[i];
-        bs_real value = m[i][rows];
-        for (j = c + 1; j < rows; ++j)
-            value -= m[i][j] * trial[j];
-        trial[c] = value * inverse[i];
+        bs_real value = m[i][k];
+        for (j = c + 1; j < k; ++j)
+            value -= m[i][j] * unknown[j];
+        unknown[c] = value * inverse[i];
+    }
+    for (j = 0; j < ROWS * set->count; ++j)
+        trial[j] = BS_R(0.0);
+    for (j = 0; j < k; ++j) {
+        trial[row[j]] = unknown[j];
+#if BS_WITH_FRICTION
+        if (fold[j] != BS_R(0.0))
+            trial[row[j] + 1] = fold[j] * unknown[j];
+#endif
     }
 }
 
 /* The mode contact a's trial solution points to (its own mode if it obeys
  * its law). A stick breach is checked first: a nearly singular stick pair
  * gives wild P_T and P_N of either sign, and only the slip row tames P_T. */
-static int corrected_mode(const bs_contact_set *set, int a, int mode, const bs_real *xi)
+static int pointed_mode(const bs_contact_set *set, int a, int mode, const bs_real *xi)
 {
     const bs_real *p = &set->percussion[ROWS * a];
 
@@ -355,19 +402,77 @@ static int corrected_mode(const bs_contact_set *set, int a, int mode, const bs_r
     return mode;
 }
 
-/* Moves the first contact whose trial solution breaks its law (Murty's
- * least-index rule). Returns 1 if a contact moved, 0 if all laws hold. */
-static int correct_modes(const bs_contact_set *set, int *mode, const bs_real *xi)
+/* How far contact a's trial breaks its law on the velocity's side (xi_N < 0
+ * lifting off, xi_T against a slip), or -1 when the breach is on the
+ * percussion's side (P_N < 0, P_T outside the cone). */
+static bs_real breach_size(const bs_contact_set *set, int a, int mode, const bs_real *xi)
 {
-    int a;
+    const bs_real *p = &set->percussion[ROWS * a];
+    if (mode == MODE_TAKEOFF)
+        return -xi[0];
+#if BS_WITH_FRICTION
+    if (mode == MODE_STICK)
+        return BS_R(-1.0);
+    if (!(p[0] < BS_R(0.0)))
+        return bs_fabs(xi[1]);
+#endif
+    (void)p;
+    return BS_R(-1.0);
+}
+
+/* The mode contact a takes in its own exact solution with the others held
+ * at their trial percussions, or, where that is its present mode, the one
+ * its breach points to. */
+static int next_mode(bs_contact_set *set, const bs_real *step, int a, int mode, const bs_real *xi)
+{
+    bs_real *p = &set->percussion[ROWS * a];
+    bs_real saved[ROWS];
+    int r, local;
+    for (r = 0; r < ROWS; ++r)
+        saved[r] = p[r];
+    solve_contact(set, step, a);
+    local = mode_of(set, a);
+    for (r = 0; r < ROWS; ++r)
+        p[r] = saved[r];
+    return local != mode ? local : pointed_mode(set, a, mode, xi);
+}
+
+/* The modes of the next trial from the present trial's P (in set) and xi:
+ * a breach on the percussion's side is the surest sign of a wrong mode, so
+ * where there is one, every contact with one moves; else the contact with
+ * the largest velocity breach alone (velocities depend on every contact's
+ * P, and two corners of one face often breach together when only one is
+ * wrong). Each moving contact takes the mode of its own exact solution
+ * against the others (the pointed one if that is its present mode). Returns
+ * the number of contacts whose law broke (0: all laws hold). */
+static int next_modes(bs_contact_set *set, const bs_real *step, int *mode, const bs_real *xi)
+{
+    int next[BS_MAX_CONTACTS];
+    int a, broken = 0, percussion_side = 0, largest = -1;
+    bs_real size = BS_R(0.0);
+
     for (a = 0; a < set->count; ++a) {
-        const int next = corrected_mode(set, a, mode[a], &xi[ROWS * a]);
-        if (next != mode[a]) {
-            mode[a] = next;
-            return 1;
+        next[a] = pointed_mode(set, a, mode[a], &xi[ROWS * a]);
+        if (next[a] != mode[a]) {
+            const bs_real velocity_side = breach_size(set, a, mode[a], &xi[ROWS * a]);
+            ++broken;
+            if (velocity_side < BS_R(0.0))
+                percussion_side = 1;
+            else if (largest < 0 || velocity_side > size) {
+                largest = a;
+                size = velocity_side;
+            }
         }
     }
-    return 0;
+    for (a = 0; a < set->count; ++a)
+        if (next[a] != mode[a]
+            && (percussion_side ? breach_size(set, a, mode[a], &xi[ROWS * a]) < BS_R(0.0) : a == largest))
+            next[a] = next_mode(set, step, a, mode[a], &xi[ROWS * a]);
+        else
+            next[a] = mode[a];
+    for (a = 0; a < set->count; ++a)
+        mode[a] = next[a];
+    return broken;
 }
 
 /* Two contacts (docs/design.md 6): one sweep, whose answer is often
@@ -378,7 +483,7 @@ static int correct_modes(const bs_contact_set *set, int *mode, const bs_real *xi
  * systems, a hard bound on the work; the P with the smallest residual is kept.
  * The near-parallel rows of two corners on one face, where Gauss-Seidel
  * crawls, cost nothing extra here. */
-static void solve_pair(bs_contact_set *set, const bs_real *step, bs_real tolerance, bs_step_report *report)
+static void solve_pair(bs_contact_set *set, const bs_real *step, bs_goal goal, bs_step_report *report)
 {
     bs_real m[2 * ROWS][MAX_ROWS + 1]; /* [A | b] of a pair's 2 ROWS rows */
     bs_real best[2 * ROWS], trial[2 * ROWS], xi[2 * ROWS];
@@ -395,7 +500,7 @@ static void solve_pair(bs_contact_set *set, const bs_real *step, bs_real toleran
     mode[0] = mode_of(set, 0);
     mode[1] = mode_of(set, 1);
     /* the sweep's answer, if within the tolerance, stands */
-    for (searching = best_residual > tolerance; searching;) {
+    for (searching = best_residual > goal.tolerance; searching;) {
         index = MODES * mode[0] + mode[1];
         if (tried >> index & 1u) { /* a repeat: the first pair not yet tried */
             for (index = 0; index < MODES * MODES && (tried >> index & 1u); ++index)
@@ -407,16 +512,18 @@ static void solve_pair(bs_contact_set *set, const bs_real *step, bs_real toleran
         }
         tried |= 1u << index;
         active_set_solve(set, mode, m, trial);
+        ++report->systems;
         for (j = 0; j < 2 * ROWS; ++j)
             set->percussion[j] = trial[j];
         trial_residual = residual_of(set, step, xi);
         /* done when the laws hold and the residual is within the tolerance
          * (within it alone is not enough: at small percussions a cone a few
-         * per cent off can be); else a broken law moves its contact to the
-         * mode it points to, and a repeat (or laws that hold above the
-         * tolerance: a dependent column left an equation unmet) goes on to the
-         * next pair not tried */
-        searching = correct_modes(set, mode, xi) || trial_residual > tolerance;
+         * per cent off can be), or the residual is at rounding's floor; else
+         * the next modes (next_modes), and a repeat (or laws that hold above
+         * the tolerance: a dependent column left an equation unmet) goes on
+         * to the next pair not tried */
+        searching = trial_residual > goal.exact
+                    && (next_modes(set, step, mode, xi) > 0 || trial_residual > goal.tolerance);
         if (!searching || trial_residual < best_residual) {
             best_residual = trial_residual;
             for (j = 0; j < 2 * ROWS; ++j)
@@ -426,73 +533,97 @@ static void solve_pair(bs_contact_set *set, const bs_real *step, bs_real toleran
     for (j = 0; j < 2 * ROWS; ++j)
         set->percussion[j] = best[j];
     report->residual = best_residual;
-    report->converged = best_residual <= tolerance;
+    report->converged = best_residual <= goal.tolerance;
 }
 
 #if BS_WITH_SUBSPACE
-/* Subspace step of the sweeps of three or more contacts (see the header
- * comment); keeps the best P seen. */
-static void try_subspace(bs_contact_set *set, const bs_real *step, bs_real *best_residual)
+/* The active-set method over three or more contacts from the modes given,
+ * while *budget lasts (one system each) and some law breaks; the P with the
+ * smallest residual (and it) is left in place if no trial meets the laws
+ * within the tolerance. Returns 1 when one did. */
+static int solve_active_set(bs_contact_set *set, const bs_real *step, bs_goal goal, int *mode,
+                            int *budget, bs_step_report *report)
 {
     const int rows = ROWS * set->count;
     bs_real best[MAX_ROWS];
     bs_real trial[MAX_ROWS];
     bs_real xi[MAX_ROWS];
-    int tried[SUBSPACE_TRIES][BS_MAX_CONTACTS];
-    int mode[BS_MAX_CONTACTS];
-    int count, j;
+    bs_real trial_residual;
+    int j, broken = 1, solved = 0;
 
     for (j = 0; j < rows; ++j)
         best[j] = set->percussion[j];
-    for (j = 0; j < set->count; ++j)
-        mode[j] = mode_of(set, j);
-    for (count = 0; count < SUBSPACE_TRIES; ++count) {
-        bs_real trial_residual;
-        int seen, earlier;
-        for (seen = 0, earlier = 0; earlier < count && !seen; ++earlier)
-            for (seen = 1, j = 0; j < set->count; ++j)
-                seen &= tried[earlier][j] == mode[j];
-        if (seen)
-            break;
+    while (*budget > 0 && broken) {
         active_set_solve(set, mode, set->system, trial);
-        for (j = 0; j < set->count; ++j)
-            tried[count][j] = mode[j];
+        ++report->systems;
+        --*budget;
         for (j = 0; j < rows; ++j)
             set->percussion[j] = trial[j];
         trial_residual = residual_of(set, step, xi);
-        if (trial_residual < *best_residual) {
-            *best_residual = trial_residual;
+        /* laws that hold above the tolerance: a dependent column left an
+         * equation unmet, which the same modes will not meet again */
+        broken = trial_residual <= goal.exact ? 0 : next_modes(set, step, mode, xi);
+        solved = trial_residual <= goal.exact || (broken == 0 && trial_residual <= goal.tolerance);
+        if (solved || trial_residual < report->residual) {
+            report->residual = trial_residual;
             for (j = 0; j < rows; ++j)
                 best[j] = trial[j];
         }
-        if (correct_modes(set, mode, xi) == 0)
-            break;
     }
     for (j = 0; j < rows; ++j)
         set->percussion[j] = best[j];
+    return solved;
 }
 #endif /* BS_WITH_SUBSPACE */
 
-/* Three or more contacts: Gauss-Seidel sweeps, each followed by the
- * residual and, if not converged, the subspace step; until converged, the
- * cap, or a sweep that does not lower the residual. */
-static void solve_sweeps(bs_contact_set *set, const bs_real *step, bs_real tolerance, int max_sweeps,
-                         bs_step_report *report)
+/* Three or more contacts: first the active-set method from the warm start's
+ * modes (a contact new to the set: sticking if it approaches, else lifting
+ * off), which in a lasting contact gets it right at once; failing that,
+ * Gauss-Seidel sweeps, each not converged followed by the active-set method
+ * from the modes the sweep reached, until converged, the cap, or a sweep
+ * that does not lower the residual. */
+static void solve_many(bs_contact_set *set, const bs_real *step, bs_goal goal, int max_sweeps,
+                       bs_step_report *report)
 {
-    bs_real previous = BS_R(0.0);
+    bs_real previous;
     int a;
+#if BS_WITH_SUBSPACE
+    int mode[BS_MAX_CONTACTS];
+    int budget = SYSTEMS_MAX;
 
+    for (a = 0; a < set->count; ++a)
+        mode[a] = set->percussion[ROWS * a] > BS_R(0.0) ? mode_of(set, a)
+                  : set->free_velocity[ROWS * a] < BS_R(0.0) ? MODE_STICK : MODE_TAKEOFF;
+    report->residual = residual(set, step);
+    if (report->residual <= goal.tolerance) { /* the warm start stands */
+        report->sweeps = 0;
+        report->converged = 1;
+        return;
+    }
+    if (solve_active_set(set, step, goal, mode, &budget, report)) { /* within tolerance, or at rounding's floor */
+        report->sweeps = 0;
+        report->converged = report->residual <= goal.tolerance;
+        return;
+    }
+#endif
+    previous = BS_R(0.0);
     report->sweeps = 0;
-    for (;;) { /* at least one sweep: the warm start is not trusted unchecked */
+    for (;;) {
         for (a = 0; a < set->count; ++a)
             solve_contact(set, step, a);
         ++report->sweeps;
         report->residual = residual(set, step);
 #if BS_WITH_SUBSPACE
-        if (report->residual > tolerance)
-            try_subspace(set, step, &report->residual);
+        if (report->residual > goal.tolerance && budget > 0) {
+            for (a = 0; a < set->count; ++a)
+                mode[a] = mode_of(set, a);
+            if (solve_active_set(set, step, goal, mode, &budget, report)) {
+                report->converged = report->residual <= goal.tolerance;
+                return;
+            }
+        }
 #endif
-        report->converged = report->residual <= tolerance;
+        report->converged = report->residual <= goal.tolerance;
         /* stop at the cap, or when a round made no progress: then the
          * residual sits at what the precision can resolve for this G */
         if (report->converged || report->sweeps >= max_sweeps
@@ -505,18 +636,22 @@ static void solve_sweeps(bs_contact_set *set, const bs_real *step, bs_real toler
 void bs_pgs_solve(bs_contact_set *set, const bs_solver_options *options, bs_step_report *report)
 {
     bs_real step[BS_MAX_CONTACTS];
-    bs_real tolerance;
+    bs_real scale;
+    bs_goal goal;
 
     step_sizes(set, step);
-    tolerance = options->tol_rel * percussion_scale(set, step) + options->tol_abs;
+    scale = percussion_scale(set, step);
+    goal.tolerance = options->tol_rel * scale + options->tol_abs;
+    goal.exact = BS_R(64.0) * BS_REAL_EPS * scale;
+    report->systems = 0;
     if (set->count == 1) { /* exact by itself: the residual only when asked */
         const int exact = solve_contact(set, step, 0);
         report->sweeps = 1;
         report->residual = options->measure_residual ? residual(set, step) : BS_R(-1.0);
-        report->converged = options->measure_residual ? report->residual <= tolerance : exact;
+        report->converged = options->measure_residual ? report->residual <= goal.tolerance : exact;
     } else if (set->count == 2) {
-        solve_pair(set, step, tolerance, report);
+        solve_pair(set, step, goal, report);
     } else {
-        solve_sweeps(set, step, tolerance, options->max_sweeps, report);
+        solve_many(set, step, goal, options->max_sweeps, report);
     }
 }

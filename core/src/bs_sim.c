@@ -79,6 +79,7 @@ bs_status bs_sim_init_(uint32_t tag, size_t sim_size, size_t scene_size, bs_sim 
     clear_percussions(sim);
     sim->report.active = 0;
     sim->report.sweeps = 0;
+    sim->report.systems = 0;
     sim->report.residual = BS_R(0.0);
     sim->report.converged = 1;
     sim->contacts.count = 0;

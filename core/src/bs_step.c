@@ -222,6 +222,7 @@ bs_status bs_sim_step(bs_sim *sim)
     if (status != BS_OK)
         return status;
     sim->report.sweeps = 0;
+    sim->report.systems = 0;
     sim->report.residual = BS_R(0.0);
     sim->report.converged = 1;
     if (sim->contacts.count > 0)

@@ -59,8 +59,7 @@ int run_scene(const bs_scene *scene, const run_options *options, run_result *res
     result->t_s_min = 0.0;
     result->amp_final_h = 0.0;
     result->amp_periods = 0;
-    result->max_pgs_sweeps = 0;
-    result->unconverged_steps = result->contact_steps = result->total_sweeps = 0;
+    solve_tally_clear(&result->solve);
     result->wall_s = 0.0;
     result->hash = 0;
     if (result->status != BS_OK)
@@ -81,14 +80,7 @@ int run_scene(const bs_scene *scene, const run_options *options, run_result *res
             break;
         result->steps = step;
         bs_sim_get_report(&sim, &report);
-        if (report.active) {
-            ++result->contact_steps;
-            result->total_sweeps += (uint64_t)report.sweeps;
-            if (report.sweeps > result->max_pgs_sweeps)
-                result->max_pgs_sweeps = report.sweeps;
-            if (report.converged == 0)
-                ++result->unconverged_steps;
-        }
+        solve_tally_add(&result->solve, &report);
         s = (double)bs_sim_position(&sim);
         if (s < result->s_min) {
             result->s_min = s;

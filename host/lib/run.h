@@ -5,6 +5,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include "beamslider.h"
+#include "solve_tally.h"
 
 #define RUN_AMP_PERIODS 25 /* amplitude: mean over the last 25 excitation periods */
 
@@ -31,10 +32,7 @@ typedef struct run_result {
     double amp_final_h;        /* mean half peak-to-peak of w(4L/7) / h, last RUN_AMP_PERIODS periods */
     int amp_periods;           /* periods behind amp_final_h */
     double wall_s;
-    int max_pgs_sweeps;
-    uint64_t unconverged_steps; /* contact steps the solve reported unconverged (converged == 0) */
-    uint64_t contact_steps;    /* steps with at least one active contact */
-    uint64_t total_sweeps;     /* over contact steps */
+    solve_tally solve;         /* the contact solves */
     uint32_t hash;             /* bs_sim_hash of the final state */
 } run_result;
 

@@ -48,14 +48,16 @@ static void add_count(summary *s, const char *key, unsigned long long value)
         s->failed = 1;
 }
 
-/* The contact-solve figures both summaries end with. */
-static void add_contact_figures(summary *s, int max_sweeps, uint64_t unconverged, uint64_t contact_steps,
-                                uint64_t total_sweeps)
+/* The contact-solve figures both summaries end with: sweeps ("pgs_iters")
+ * and active-set systems per contact step, most and mean. */
+static void add_contact_figures(summary *s, const solve_tally *solve)
 {
-    add_int(s, "max_pgs_iters", max_sweeps);
-    add_count(s, "unconverged_steps", unconverged);
-    add_count(s, "contact_steps", contact_steps);
-    add_number(s, "mean_pgs_iters", "%.4g", contact_steps ? (double)total_sweeps / (double)contact_steps : 0.0);
+    add_int(s, "max_pgs_iters", solve->max_sweeps);
+    add_count(s, "unconverged_steps", solve->unconverged_steps);
+    add_count(s, "contact_steps", solve->contact_steps);
+    add_number(s, "mean_pgs_iters", "%.4g", solve_tally_mean_sweeps(solve));
+    add_int(s, "max_systems", solve->max_systems);
+    add_number(s, "mean_systems", "%.4g", solve_tally_mean_systems(solve));
 }
 
 /* What produced the numbers: the library's version and the source revision
@@ -103,7 +105,7 @@ int summary_print_run(FILE *out, const scene_params *p, const bs_scene *scene, c
     add_int(&s, "amp_periods", r->amp_periods);
     add_number(&s, "wall_s", "%.4g", r->wall_s);
     add_number(&s, "steps_per_s", "%.4g", r->wall_s > 0.0 ? (double)r->steps / r->wall_s : 0.0);
-    add_contact_figures(&s, r->max_pgs_sweeps, r->unconverged_steps, r->contact_steps, r->total_sweeps);
+    add_contact_figures(&s, &r->solve);
     snprintf(hash, sizeof hash, "%08x", (unsigned)r->hash);
     add_text(&s, "hash", hash);
     add_provenance(&s);
@@ -133,7 +135,7 @@ int summary_print_sweep(FILE *out, const scene_params *p, const bs_scene *scene,
     add_count(&s, "steps", (unsigned long long)r->steps);
     add_number(&s, "wall_s", "%.4g", r->wall_s);
     add_number(&s, "steps_per_s", "%.4g", r->wall_s > 0.0 ? (double)r->steps / r->wall_s : 0.0);
-    add_contact_figures(&s, r->max_sweeps, r->unconverged_steps, r->contact_steps, r->total_sweeps);
+    add_contact_figures(&s, &r->solve);
     add_provenance(&s);
     return finish(&s, out);
 }

@@ -82,12 +82,12 @@ static bs_status run_point(const bs_scene *scene, bs_sim *sim, bs_monitor *monit
     const double h = 2.0 * (double)scene->half_thickness;
     const int periods = options->hold + options->record;
     double amp_sum = 0.0, transport_sum = 0.0;
-    uint64_t total_sweeps = 0, trace_steps = 0;
+    uint64_t trace_steps = 0;
     int done = 0;                        /* completed periods at this point */
     int trace = traced ? 0 : -1;         /* -1 off, 0 waiting for the hold's end, 1 tracing */
 
-    point->max_sweeps = 0;
-    point->unconverged_steps = point->contact_steps = point->steps = 0;
+    solve_tally_clear(&point->solve);
+    point->steps = 0;
     for (;;) {
         if (trace == 1 || (trace == 0 && done == options->hold)) {
             /* the first row is the state at the end of the hold */
@@ -109,14 +109,7 @@ static bs_status run_point(const bs_scene *scene, bs_sim *sim, bs_monitor *monit
                 return status;
             ++point->steps;
             bs_sim_get_report(sim, &report);
-            if (report.active) {
-                ++point->contact_steps;
-                total_sweeps += (uint64_t)report.sweeps;
-                if (report.sweeps > point->max_sweeps)
-                    point->max_sweeps = report.sweeps;
-                if (report.converged == 0)
-                    ++point->unconverged_steps;
-            }
+            solve_tally_add(&point->solve, &report);
         }
         if (bs_monitor_update(monitor, sim)) {
             ++done;
@@ -128,13 +121,8 @@ static bs_status run_point(const bs_scene *scene, bs_sim *sim, bs_monitor *monit
     }
     point->amp_h = amp_sum / (options->record * h);
     point->v_mean = (point->s <= 0.5 ? 1.0 : -1.0) * transport_sum / options->record;
-    point->mean_sweeps = point->contact_steps ? (double)total_sweeps / (double)point->contact_steps : 0.0;
     result->steps += point->steps;
-    result->contact_steps += point->contact_steps;
-    result->total_sweeps += total_sweeps;
-    result->unconverged_steps += point->unconverged_steps;
-    if (point->max_sweeps > result->max_sweeps)
-        result->max_sweeps = point->max_sweeps;
+    solve_tally_merge(&result->solve, &point->solve);
     return BS_OK;
 }
 
@@ -151,8 +139,8 @@ int sweep_run(const bs_scene *scene, const sweep_options *options, sweep_result 
     result->write_failed = 0;
     result->write_errno = 0;
     result->points_done = 0;
-    result->steps = result->unconverged_steps = result->contact_steps = result->total_sweeps = 0;
-    result->max_sweeps = 0;
+    result->steps = 0;
+    solve_tally_clear(&result->solve);
     result->wall_s = 0.0;
     if (n < 1 || options->hold < 0 || options->record < 1
         || (options->trace && !(options->trace_periods >= 1 && options->trace_periods <= options->record))) {
@@ -191,8 +179,9 @@ int sweep_run(const bs_scene *scene, const sweep_options *options, sweep_result 
             options->points[i] = point;
         if (options->csv
             && fprintf(options->csv, "%.6f,%.6e,%.6e,%.4f,%d,%llu,%llu,%llu\n", point.s, point.amp_h,
-                       point.v_mean, point.mean_sweeps, point.max_sweeps,
-                       (unsigned long long)point.unconverged_steps, (unsigned long long)point.contact_steps,
+                       point.v_mean, solve_tally_mean_sweeps(&point.solve), point.solve.max_sweeps,
+                       (unsigned long long)point.solve.unconverged_steps,
+                       (unsigned long long)point.solve.contact_steps,
                        (unsigned long long)point.steps) < 0)
             fail_write(result);
         result->points_done = i + 1;

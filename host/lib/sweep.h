@@ -13,6 +13,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include "beamslider.h"
+#include "solve_tally.h"
 
 #define SWEEP_MAX_POINTS 100001
 
@@ -23,10 +24,7 @@ typedef struct sweep_point {
                                  peak-to-peak of w(4L/7), / h */
     double v_mean;            /* x_C displacement over the recorded periods / (L N_rec),
                                  positive toward the beam centre */
-    double mean_sweeps;       /* contact-solve sweeps per contact step (hold + record) */
-    int max_sweeps;
-    uint64_t unconverged_steps;
-    uint64_t contact_steps;   /* steps with at least one active contact */
+    solve_tally solve;        /* the contact solves (hold + record) */
     uint64_t steps;           /* steps at this point (hold + record periods) */
 } sweep_point;
 
@@ -50,8 +48,7 @@ typedef struct sweep_result {
     int write_errno;          /* errno of the first failed write */
     int points_done;          /* complete grid points */
     uint64_t steps;
-    int max_sweeps;
-    uint64_t unconverged_steps, contact_steps, total_sweeps;
+    solve_tally solve;        /* the contact solves of all points */
     double wall_s;
 } sweep_result;
 
