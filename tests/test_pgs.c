@@ -205,7 +205,11 @@ static void test_residual_formula_matches_independent_one(void **state)
         }
 }
 
-static void test_warm_start_from_solution_needs_one_sweep(void **state)
+/* Warm-started from the solution, a solve does the least its path allows:
+ * one contact one exact visit (a sweep), two a sweep for the modes and one
+ * system, three or more one system or, if the warm start already meets the
+ * tolerance, nothing (one sweep in a build without the active-set step). */
+static void test_warm_start_from_solution_needs_one_pass(void **state)
 {
     int id, i;
     (void)state;
@@ -214,13 +218,16 @@ static void test_warm_start_from_solution_needs_one_sweep(void **state)
         double expected[2 * BS_MAX_CONTACTS];
         bs_step_report result;
         const int n = case_to_set(cJSON_GetArrayItem(cases, id), &set, expected);
+        const int sweeps = n <= 2 || !BS_WITH_SUBSPACE;
+        const int systems = n == 2 || (n >= 3 && BS_WITH_SUBSPACE);
         for (i = 0; i < 2 * n; ++i)
             set.percussion[i] = (bs_real)expected[i];
         result = solve(&set, 50, BS_R(1e-5), BS_R(0.0));
         assert_true(result.converged);
-        if (result.sweeps + result.systems > 1)
+        if (result.sweeps > sweeps || result.systems > systems)
             print_error("case %d (n = %d): %d sweeps, %d systems\n", id, n, result.sweeps, result.systems);
-        assert_true(result.sweeps + result.systems <= 1); /* at most one sweep or (2+ contacts) system */
+        assert_true(result.sweeps <= sweeps);
+        assert_true(result.systems <= systems);
     }
 }
 
@@ -441,7 +448,7 @@ int main(void)
         cmocka_unit_test(test_converged_solves_match_enumeration),
         cmocka_unit_test(test_capped_solve_reports_its_true_residual),
         cmocka_unit_test(test_residual_formula_matches_independent_one),
-        cmocka_unit_test(test_warm_start_from_solution_needs_one_sweep),
+        cmocka_unit_test(test_warm_start_from_solution_needs_one_pass),
         cmocka_unit_test(test_redundant_pair),
         cmocka_unit_test(test_one_face_pairs_are_solved_exactly),
     };

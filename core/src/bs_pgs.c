@@ -28,9 +28,9 @@
  * Two contacts (the rest of the contact steps of the scenes): exact too. Two
  * corners on the same face of the slot see almost the same beam motion, so
  * their rows of G are nearly parallel and Gauss-Seidel crawls (hundreds of
- * sweeps, docs/model.md 9.5). solve_pair does one sweep (its answer is often
- * exact already), then the active-set method: the modes the sweep reached
- * define a linear system in the unknowns they leave free (Gaussian
+ * sweeps, docs/model.md 9.5). solve_pair does one sweep for the modes, then
+ * the active-set method: the modes the sweep reached define a linear system
+ * in the unknowns they leave free (Gaussian
  * elimination with partial pivoting, active_set_solve; redundant rows get the
  * basic solution); if its solution breaks a law, next_modes picks the modes
  * of the next trial (below) and the system is solved again; a mode pair that
@@ -46,7 +46,7 @@
  * contact's P and two corners of one face often breach together when only
  * one is wrong. A moving contact takes the mode of its own exact solution
  * with the others held at the trial's P (the mode its breach points to if
- * that is its present one). On fig6 this needs 1.27 systems per two-contact
+ * that is its present one). On fig6 this needs 1.25 systems per two-contact
  * step on average and at most 8 (docs/design.md 6).
  *
  * Three or more contacts (a preloaded slot, all four corners and a stop):
@@ -491,16 +491,17 @@ static void solve_pair(bs_contact_set *set, const bs_real *step, bs_goal goal, b
     unsigned tried = 0; /* bit MODES * mode[0] + mode[1]: that pair solved */
     int mode[2], index, j, searching;
 
+    /* one sweep for the modes: its P is not checked (the system of its modes
+     * gives the exact P of those modes, at the same price as its residual) */
     solve_contact(set, step, 0);
     solve_contact(set, step, 1);
     report->sweeps = 1;
-    best_residual = residual_of(set, step, xi);
-    for (j = 0; j < 2 * ROWS; ++j)
-        best[j] = set->percussion[j];
     mode[0] = mode_of(set, 0);
     mode[1] = mode_of(set, 1);
-    /* the sweep's answer, if within the tolerance, stands */
-    for (searching = best_residual > goal.tolerance; searching;) {
+    best_residual = BS_R(0.0);
+    for (j = 0; j < 2 * ROWS; ++j) /* both replaced by the first trial */
+        best[j] = set->percussion[j];
+    for (searching = 1; searching;) {
         index = MODES * mode[0] + mode[1];
         if (tried >> index & 1u) { /* a repeat: the first pair not yet tried */
             for (index = 0; index < MODES * MODES && (tried >> index & 1u); ++index)
@@ -524,7 +525,7 @@ static void solve_pair(bs_contact_set *set, const bs_real *step, bs_goal goal, b
          * to the next pair not tried */
         searching = trial_residual > goal.exact
                     && (next_modes(set, step, mode, xi) > 0 || trial_residual > goal.tolerance);
-        if (!searching || trial_residual < best_residual) {
+        if (!searching || tried == 1u << index || trial_residual < best_residual) {
             best_residual = trial_residual;
             for (j = 0; j < 2 * ROWS; ++j)
                 best[j] = trial[j];
@@ -537,6 +538,16 @@ static void solve_pair(bs_contact_set *set, const bs_real *step, bs_goal goal, b
 }
 
 #if BS_WITH_SUBSPACE
+/* The mode of contact a to start the active-set method from (three or more
+ * contacts): the one its warm start shows, or for a contact new to the set
+ * sticking if it approaches, else lifting off. */
+static int warm_mode(const bs_contact_set *set, int a)
+{
+    if (set->percussion[ROWS * a] > BS_R(0.0))
+        return mode_of(set, a);
+    return set->free_velocity[ROWS * a] < BS_R(0.0) ? MODE_STICK : MODE_TAKEOFF;
+}
+
 /* The active-set method over three or more contacts from the modes given,
  * while *budget lasts (one system each) and some law breaks; the P with the
  * smallest residual (and it) is left in place if no trial meets the laws
@@ -592,8 +603,7 @@ static void solve_many(bs_contact_set *set, const bs_real *step, bs_goal goal, i
     int budget = SYSTEMS_MAX;
 
     for (a = 0; a < set->count; ++a)
-        mode[a] = set->percussion[ROWS * a] > BS_R(0.0) ? mode_of(set, a)
-                  : set->free_velocity[ROWS * a] < BS_R(0.0) ? MODE_STICK : MODE_TAKEOFF;
+        mode[a] = warm_mode(set, a);
     report->residual = residual(set, step);
     if (report->residual <= goal.tolerance) { /* the warm start stands */
         report->sweeps = 0;

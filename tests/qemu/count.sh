@@ -5,6 +5,9 @@
 #     [insn] N         at each call of bs_board_mark(): N = instructions executed since the
 #                      previous mark (since reset for the first one), the mark call excluded
 #     [insn] total N   at the end: instructions of the whole run
+# With CM_CYCLES=1 both kinds of line go on "cycles C taken T flash F": the Cortex-M4 cycle
+# estimate of the same instructions, its branches taken and its data reads from the code
+# region (insn-plugin/insncount.c, "Cycle model").
 # plus run.sh's messages. A bracket  mark(); code; mark(); printf("label\n");  therefore shows
 # as "[insn] N" directly followed by "label": N is the code's cost plus the harness overhead
 # (2 for an empty bracket; see README.md). Counts are exact and deterministic.
@@ -28,9 +31,10 @@ CM_BUILD=$(cd "$CM_BUILD" && pwd)
 plugin=$CM_BUILD/libinsncount.so
 mark=$("${CM_NM:-arm-none-eabi-nm}" "$elf" | awk '$3 == "bs_board_mark" { print $1; exit }')
 if [ -n "$mark" ]; then
-    plugin=$plugin,mark=0x$mark${CM_PROFILE:+,$CM_PROFILE}
+    plugin=$plugin,mark=0x$mark${CM_PROFILE:+,$CM_PROFILE}${CM_CYCLES:+,cycles=$CM_CYCLES}
 else
     [ -z "${CM_PROFILE:-}" ] || { echo "count.sh: CM_PROFILE needs bs_board_mark in $elf" >&2; exit 2; }
+    plugin=$plugin${CM_CYCLES:+,cycles=$CM_CYCLES}
     echo "count.sh: no bs_board_mark in $elf: only the total is counted" >&2
 fi
 # The plugin prints on stderr; merging keeps its lines in order with the guest's output (both

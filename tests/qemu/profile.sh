@@ -6,6 +6,9 @@
 #     brackets N worst B W          as the profile's first line (N brackets, the costliest B: W)
 #     FUNCTION TOTAL WORST          one line per function, costliest in bracket B first
 # TOTAL = instructions in the function's own code over the N brackets, WORST = in bracket B.
+# A profile taken with CM_CYCLES=1 adds a fourth column, CYCLES: the function's estimated
+# Cortex-M4 cycles over the N brackets, base + P x branches taken + W x reads of the code
+# region (P = CM_REFILL, default 3; W = CM_WAIT, default 5: the pessimistic estimate).
 # Inlined code counts in the function it was inlined into; addresses in no sized symbol
 # (veneers, padding) count as "(unknown)", outside the code region as "(outside)".
 set -eu
@@ -35,5 +38,10 @@ awk '
             if (n && start[low] <= address && address < stop[low]) function_name = name[low]
         }
         total[function_name] += $2; worst[function_name] += $3
+        if (NF == 6) { cycles[function_name] += $2 * $4 + refill * $5 + wait * $6; with_cycles = 1 }
     }
-    END { for (f in total) printf "%s %.0f %.0f\n", f, total[f], worst[f] }' "$symbols" "$1" | sort -k3,3nr -k2,2nr
+    END {
+        for (f in total)
+            if (with_cycles) printf "%s %.0f %.0f %.0f\n", f, total[f], worst[f], cycles[f]
+            else printf "%s %.0f %.0f\n", f, total[f], worst[f]
+    }' refill="${CM_REFILL:-3}" wait="${CM_WAIT:-5}" "$symbols" "$1" | sort -k3,3nr -k2,2nr

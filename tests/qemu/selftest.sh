@@ -30,6 +30,10 @@ check() { # check DESCRIPTION CONDITION...: the condition is a test(1) expressio
 count_of() { # count_of FILE LABEL -> the "[insn] N" right before the line LABEL
     awk -v label="$2" '/^\[insn\] [0-9]+$/ { n = $2; next } $0 == label { print n; exit }' "$1"
 }
+cycles_of() { # cycles_of FILE LABEL FIELD -> FIELD (cycles, taken, flash) of the mark line before LABEL
+    awk -v label="$2" -v field="$3" '/^\[insn\] [0-9]+ cycles/ { for (i = 3; i < NF; i += 2) v[$i] = $(i + 1); next }
+        $0 == label { print v[field]; exit }' "$1"
+}
 has() { grep -qxF "$2" "$1"; }
 
 for tool in arm-none-eabi-gcc arm-none-eabi-nm qemu-system-arm timeout; do
@@ -132,6 +136,28 @@ if [ -n "$counting" ]; then
            awk '$1 == "selftest_mul_add" { print $3 }')
     check "profile: selftest_mul_add ${loop:-?} instructions in bracket 3 (expect 5000..5010)" \
         "${loop:-0}" -ge 5000 -a "${loop:-0}" -le 5010
+    # The cycle estimate (CM_CYCLES=1): loops whose cost the model fixes per iteration, and
+    # data reads from the code region counted where the table is and not where it is not.
+    out=$CM_BUILD/cortex-m4f/selftest.cycles
+    CM_CYCLES=1 sh "$here/count.sh" "$CM_BUILD/cortex-m4f/selftest.elf" cortex-m4f 30 >"$out" 2>&1
+    check "cycles: counts unchanged by the cycle estimate" \
+        "$(cycles_of "$out" "bracket mul_add n=1000" cycles | wc -c)" -gt 1 -a \
+        "$(sed -n 's/^\(\[insn\] [0-9]*\).*/\1/p' "$out" | cksum)" = \
+        "$(sed -n 's/^\(\[insn\] [0-9]*\).*/\1/p' "$CM_BUILD/cortex-m4f/selftest.out" | cksum)"
+    for loop in "mul_add 5" "div_add 18"; do
+        set -- $loop
+        c0=$(cycles_of "$out" "bracket $1 n=0" cycles); c1=$(cycles_of "$out" "bracket $1 n=1000" cycles)
+        t0=$(cycles_of "$out" "bracket $1 n=0" taken); t1=$(cycles_of "$out" "bracket $1 n=1000" taken)
+        # taken: 999 back edges, less the n = 0 bracket's branch around the loop
+        check "cycles: $1 costs $(( (${c1:-0} - ${c0:-0}) )) base cycles and $(( ${t1:-0} - ${t0:-0} )) taken branches more for 1000 iterations (expect $2 x 1000 + 0..5, 998)" \
+            $((${c1:-0} - ${c0:-0})) -ge $(($2 * 1000)) -a $((${c1:-0} - ${c0:-0})) -le $(($2 * 1000 + 5)) -a \
+            $((${t1:-0} - ${t0:-0})) -eq 998
+    done
+    fl=$(cycles_of "$out" "bracket sum flash" flash); ram=$(cycles_of "$out" "bracket sum ram" flash)
+    check "cycles: 64 floats from a const table = ${fl:-?} reads of the code region (expect 64..66), from RAM ${ram:-?} (expect 0..2)" \
+        "${fl:-0}" -ge 64 -a "${fl:-0}" -le 66 -a "${ram:-99}" -le 2
+    check "cycles: empty bracket = $(cycles_of "$out" "bracket empty" cycles) cycles, $(cycles_of "$out" "bracket empty" taken) taken (expect 2, 2)" \
+        "$(cycles_of "$out" "bracket empty" cycles)" = 2 -a "$(cycles_of "$out" "bracket empty" taken)" = 2
 fi
 
 note=
