@@ -63,8 +63,8 @@
 #ifndef BS_WITH_IMPLICIT        /* the linearly implicit theta variant of the step */
 #define BS_WITH_IMPLICIT 1
 #endif
-#ifndef BS_WITH_SUBSPACE        /* the contact solve's subspace step (core/src/bs_pgs.c): exact on */
-#define BS_WITH_SUBSPACE 1      /* redundant contacts; 0 bounds a step at plain sweeps */
+#ifndef BS_WITH_SUBSPACE        /* the active-set solve of three or more contacts (core/src/bs_pgs.c); */
+#define BS_WITH_SUBSPACE 1      /* 0: plain sweeps for those (one and two contacts stay exact) */
 #endif
 
 /* Rows of the contact problem per contact: normal, and tangential with friction. */

@@ -30,7 +30,7 @@ typedef struct bs_contact_set {
 #endif
     bs_real percussion[BS_ROWS * BS_MAX_CONTACTS];     /* P [N s] */
 #if BS_WITH_SUBSPACE
-    bs_real system[BS_ROWS * BS_MAX_CONTACTS][BS_ROWS * BS_MAX_CONTACTS + 1]; /* subspace step's [A | b] */
+    bs_real system[BS_ROWS * BS_MAX_CONTACTS][BS_ROWS * BS_MAX_CONTACTS + 1]; /* active-set [A | b], 3+ contacts */
 #endif
 } bs_contact_set;
 

@@ -45,8 +45,9 @@ typedef struct bs_solver_options {
 /* Largest max_sweeps bs_sim_set_solver accepts. */
 #define BS_SOLVER_MAX_SWEEPS 100000
 
-/* Defaults of bs_solver_defaults(): two sweeps (a real-time bound; with the
- * subspace step most contact steps converge in one, docs/accuracy.md). */
+/* Defaults of bs_solver_defaults(): two sweeps (the cap bounds only solves
+ * of three or more contacts; one and two contacts are solved exactly,
+ * docs/design.md 6). */
 #define BS_SOLVER_DEFAULT_MAX_SWEEPS 2
 #define BS_SOLVER_DEFAULT_TOL_REL 1e-5
 #define BS_SOLVER_DEFAULT_TOL_ABS 1e-7

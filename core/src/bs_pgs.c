@@ -1,5 +1,5 @@
 /* bs_pgs.c - the per-step contact problem, solved exactly where it is small
- * and by bounded projected Gauss-Seidel with subspace steps where it is not.
+ * and with a bounded number of active-set systems and sweeps where it is not.
  *
  * Unknowns: percussions P = (P_N,1, P_T,1, ..., P_N,n, P_T,n) [N s] (P_N only
  * when the build has no friction). Velocities after the step (Newton-modified):
@@ -302,7 +302,9 @@ static void active_set_solve(const bs_contact_set *set, const int *mode, bs_real
                              bs_real *trial)
 {
     int row[MAX_ROWS];          /* row (and column) of G of each unknown */
+#if BS_WITH_FRICTION
     bs_real fold[MAX_ROWS];     /* P_T / P_N of a slipping contact's unknown, else 0 */
+#endif
     bs_real inverse[MAX_ROWS];  /* 1 / pivot of each echelon row */
     bs_real unknown[MAX_ROWS];
     int pivot_column[MAX_ROWS];
@@ -311,9 +313,9 @@ static void active_set_solve(const bs_contact_set *set, const int *mode, bs_real
     for (a = 0; a < set->count; ++a) {
         if (mode[a] == MODE_TAKEOFF)
             continue;
-        row[k] = ROWS * a;
-        fold[k++] = BS_R(0.0);
+        row[k++] = ROWS * a;
 #if BS_WITH_FRICTION
+        fold[k - 1] = BS_R(0.0);
         if (mode[a] == MODE_STICK) {
             row[k] = ROWS * a + 1;
             fold[k++] = BS_R(0.0);

@@ -78,7 +78,7 @@ extern const char *const scene_integrators[];  /* explicit, implicit */
       "explicit (midpoint) | implicit (modal stiffness and damping, theta method)", scene_integrators)        \
     X(REAL, "numerics", "theta", theta, OWN, 0.5, 1.0, 0, 0, "0.5", "", "theta of the implicit step", 0)       \
     X(INT, "solver", "max_sweeps", solver_max_sweeps, OWN, 1, BS_SOLVER_MAX_SWEEPS, 0, 0,                     \
-      SCENE_TEXT_OF(BS_SOLVER_DEFAULT_MAX_SWEEPS), "", "cap on contact-solve sweeps per step", 0)            \
+      SCENE_TEXT_OF(BS_SOLVER_DEFAULT_MAX_SWEEPS), "", "cap on contact-solve sweeps per step (3+ contacts)", 0) \
     X(REAL, "solver", "tol_rel", solver_tol_rel, OWN, 0, HUGE_VAL, 0, 1, SCENE_TEXT_OF(BS_SOLVER_DEFAULT_TOL_REL), "", \
       "relative tolerance of the contact solve", 0)                                                         \
     X(REAL, "solver", "tol_abs", solver_tol_abs, OWN, 0, HUGE_VAL, 0, 1, SCENE_TEXT_OF(BS_SOLVER_DEFAULT_TOL_ABS), \

@@ -1,47 +1,79 @@
 #!/bin/sh
-# embedded_report.sh TARGET:SCENE:REAL:SOLVE:ELF... - cost of the core on Cortex-M
-# targets under QEMU, written to docs/embedded.md. Run through
-# `make embedded-report` (which builds the images: tests/embedded/scene_run.c
-# with -DBS_RUN_COST=1). SOLVE is "subspace" (the default core) or "sweeps"
-# (built with -DBS_WITH_SUBSPACE=0: the contact solve is plain sweeps), with
-# "-whole" appended for an image that runs the scene's whole run (t_end / dt
-# steps) and nothing else.
+# embedded_report.sh TARGET:SCENE:REAL:KIND:ELF... - cost of the core on Cortex-M under
+# QEMU, against the targets of the embedded issue, written to docs/embedded.md. Run
+# through `make embedded-report` (tests/embedded/embedded.mk builds the images:
+# tests/embedded/scene_run.c with -DBS_RUN_COST=1, every step bracketed by two marks).
 #
-# Per image:
-#   flash   core code (.text of core/*.o) + constants (.rodata of core/*.o and
-#           the scene's bs_compiled_scene), from the linker map after
-#           --gc-sections, i.e. what the core and its scene add to a firmware
-#   RAM     the bs_sim (the only RAM the core uses besides stack)
-#   stack   the deepest stack a phase of steps used, measured by painting
-#           (includes the few bytes of the calling loop)
-#   instructions per step, counted exactly by QEMU's TCG plugin
-#           (tests/qemu/count.sh): every step is bracketed by two marks;
-#           the count includes ~10 instructions of harness (the call through
-#           a volatile pointer and the marks), not subtracted. Phase "scene":
-#           the scene from its start (settling, impacts, contact with one or
-#           two corners); phase "tight": the worst case, all four corners and
-#           the clamp stop in contact every step; "whole run": every step of
-#           the scene from t = 0 to t_end (60 s of fig6: 3e6 steps), two
-#           images at a time
-#   where the instructions go (Cortex-M4F float, fig6 and fig6_1mode): each
-#           phase is run once more with a per-address profile (count.sh with
-#           CM_PROFILE) and split per function (tests/qemu/profile.sh);
-#           the script stops if the profile's worst step differs from the
-#           count above.
-#   optimisation level: images whose SOLVE ends in "-O2" are built at -O2
-#           instead of the default CM_OPT (-O3): their code size and counts
-#           next to those of the same scene, target and solve at CM_OPT.
-# Env: CM_OPT (the level of the other images, for the text; the Makefile passes it).
+# KIND is SOLVE[-ram][-O2|-whole]. SOLVE: "subspace" (the default core) or "sweeps"
+# (built with -DBS_WITH_SUBSPACE=0). No suffix: a per-phase cost image (phases "scene",
+# the scene's first steps, and "tight", every corner and the clamp stop in contact).
+# -ram: the scene copied to RAM before the run and no literal pools (-mslow-flash-data),
+# so that a step reads no data from flash. -O2: built at -O2 instead of CM_OPT.
+# -whole: the scene's whole run (t_end / dt steps) and nothing else.
+#
+# Measured per image (all Cortex-M4F runs with the cycle estimate, CM_CYCLES=1):
+#   flash   core code (.text of core/*.o) + constants (.rodata of core/*.o and the
+#           scene's bs_compiled_scene), from the linker map after --gc-sections
+#   RAM     the bs_sim (the only RAM the core uses besides stack), plus the scene's
+#           copy in the ram variant
+#   stack   the deepest stack a phase used, measured by painting (includes the few
+#           bytes of the calling loop)
+#   per step, from the counter's line at the second mark of each step
+#           (tests/qemu/count.sh; the count includes ~10 instructions of harness: the
+#           call through a volatile pointer and the marks, not subtracted):
+#           instructions (exact), and on the M4F estimated cycles C + P T + W F from
+#           the plugin's base cycles C, branches taken T and data reads from flash F:
+#           optimistic P = 1, W = 0; pessimistic P = 3, W = 5
+#   budget  clock x dt cycles per step: 3360 (168 MHz M4F), 9600 (480 MHz M7), dt 2e-5 s
+#   backlog of a twin that reads one sample per dt: the Lindley recursion
+#           W = max(0, W + c_k - B) over the per-step cost c_k (pessimistic cycles; on
+#           the M7, which has no cycle model, instructions) with budget B; the largest
+#           W as ceil(W / B) samples and W / f_clock
+#   where the cycles go (M4F float fig6 and fig6_1mode): the whole runs (constants in
+#           flash) are profiled as they are counted (count.sh with CM_PROFILE) and split
+#           per function (tests/qemu/profile.sh); the worst steps of the cost images'
+#           phases, default core and sweeps build, once more each. The script stops if a
+#           profile disagrees with the counts (worst step, total pessimistic cycles).
+#   the ram variant must end each phase in the same state (hash) as its flash twin.
+# QEMU runs two at a time (one image per host thread); a whole run's counts (~300 MB for
+# 60 s) are summarised as they stream and never stored.
+# Env: CM_OPT (the level of the images, for the text; the Makefile passes it), CM_BUILD,
+# OUT (default docs/embedded.md).
 set -eu
 : "${CM_OPT:?embedded_report: CM_OPT unset (run it through make embedded-report)}"
 OUT=${OUT:-docs/embedded.md}
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 
-specs=$*   # TARGET:SCENE:REAL:SOLVE:ELF words (no spaces); "set --" below reuses $@
 sh tests/qemu/build-plugin.sh >&2
 
-# core_sizes MAP -> "code rodata scene_rodata sim_bss" in bytes
+# Boards of the real-time targets at dt = 2e-5 s: clock [MHz] and cycles per step
+M4F_MHZ=168 M4F_BUDGET=3360
+M7_MHZ=480 M7_BUDGET=9600
+budget() { case $1 in cortex-m4f) echo $M4F_BUDGET ;; cortex-m7) echo $M7_BUDGET ;; *) echo 0 ;; esac; }
+mhz() { case $1 in cortex-m4f) echo $M4F_MHZ ;; cortex-m7) echo $M7_MHZ ;; *) echo 0 ;; esac; }
+# The two estimates: branch refill P and flash wait states W per data read
+OPT_REFILL=1 OPT_WAIT=0
+PESS_REFILL=3 PESS_WAIT=5
+
+# One image per job, numbered in argument order: $TMP/spec-N holds TARGET:SCENE:REAL:KIND:ELF
+n=0
+for spec in "$@"; do
+    n=$((n + 1))
+    echo "$spec" > "$TMP/spec-$n"
+done
+jobs=$n
+word() { cut -d: -f"$2" "$TMP/spec-$1"; } # word JOB FIELD
+
+# profiled TARGET SCENE REAL KIND: whether the image's cost is split per function
+profiled() {
+    [ "$1" = cortex-m4f ] && [ "$3" = float ] || return 1
+    case $2:$4 in fig6:subspace-whole | fig6_1mode:subspace-whole | fig6:subspace | fig6:sweeps | \
+                  fig6_1mode:subspace | fig6_1mode:sweeps) return 0 ;; esac
+    return 1
+}
+
+# core_sizes MAP -> "code rodata scene_rodata sim_bss scene_copy_bss" in bytes
 core_sizes() {
     awk '
         function hex(text,    i, value) { # "0x1a4" -> 420 (mawk has no strtonum)
@@ -55,281 +87,519 @@ core_sizes() {
             else if (object ~ /\/core\// && name ~ /^\.rodata/) ro += size
             else if (name == ".rodata.bs_compiled_scene") scene += size
             else if (name == ".bss.sim") sim += size
+            else if (name == ".bss.scene_in_ram") copy += size
         }
         /^ \.[A-Za-z_.0-9]+$/ { pending = $1; next }
         pending != "" && NF == 3 && $1 ~ /^0x/ { add(pending, hex($2), $3); pending = ""; next }
         /^ \.[A-Za-z_.0-9]+ +0x/ && NF == 4 { add($1, hex($3), $4) }
         { pending = "" }
-        END { printf "%d %d %d %d\n", code, ro, scene, sim }' "$1"
+        END { printf "%d %d %d %d %d\n", code, ro, scene, sim, copy }' "$1"
 }
 
-# step_counts OUTPUT PHASE [BUDGET] -> "steps mean worst over" from count.sh's output
-# (over: steps above BUDGET instructions)
-step_counts() {
-    awk -v phase="$2" -v budget="${3:-0}" '
-        $0 ~ "^" phase ": end" { inside = 0 }
-        inside && /^\[insn\] [0-9]+$/ {
-            if (++marks % 2 == 0) { n++; sum += $2; if ($2 > worst) worst = $2; if ($2 > budget) over++ }
+# The steps of one phase of count.sh's output -> "NAME VALUE" lines (read them with val):
+# steps, mean_/worst_ insn, opt (optimistic cycles), pess (pessimistic cycles); over
+# (steps whose cost exceeds the budget) and backlog (largest Lindley W, in cycles), the
+# cost being pessimistic cycles where estimated, else instructions; sum_insn, sum_pess;
+# flash and taken (mean per step); status, contacts (most at once) and stack from the
+# phase's end line, and the state's hash there. Run by steps_of.
+STEPS_AWK='
+    other != "" && !/^\[insn\] [0-9]/ { print > other }
+    $0 ~ "^" phase ": end" {
+        inside = 0
+        for (i = 3; i < NF; ++i) {
+            if ($i == "status") status = $(i + 1)
+            if ($i == "most-contacts") contacts = $(i + 1)
+            if ($i == "stack") stack = $(i + 1)
+            if ($i == "hash") hash = $(i + 1)
         }
-        $0 ~ "^scene " && phase == "scene" { inside = 1 }
-        $0 ~ "^scene: end" && phase == "tight" { inside = 1; marks = 0 }
-        END { if (n) printf "%d %.0f %d %d\n", n, sum / n, worst, over; else print "0 0 0 0" }' "$1"
+    }
+    inside && /^\[insn\] [0-9]+( |$)/ {
+        if (++marks % 2) next            # the odd marks open a step
+        ++n; insn = $2; sum_insn += insn; if (insn > worst_insn) worst_insn = insn
+        cost = insn
+        if (NF >= 8) {                   # "[insn] N cycles C taken T flash F"
+            cycles = 1
+            opt = $4 + opt_refill * $6 + opt_wait * $8
+            pess = $4 + pess_refill * $6 + pess_wait * $8
+            sum_opt += opt; if (opt > worst_opt) worst_opt = opt
+            sum_pess += pess; if (pess > worst_pess) worst_pess = pess
+            taken += $6; flash += $8
+            cost = pess
+        }
+        if (cost > budget) ++over
+        backlog += cost - budget         # Lindley: the cycles still owed when the next sample comes
+        if (backlog < 0) backlog = 0
+        if (backlog > worst_backlog) worst_backlog = backlog
+    }
+    phase == "scene" && /^scene / { inside = 1 }
+    phase == "tight" && /^scene: end/ { inside = 1; marks = 0 }
+    END {
+        printf "steps %d\nstatus %s\ncontacts %s\nstack %s\nhash %s\n", n, status == "" ? "none" : status, contacts + 0, stack + 0, hash == "" ? "-" : hash
+        if (!n) exit
+        printf "mean_insn %.0f\nworst_insn %d\nsum_insn %.0f\nover %d\nbacklog %.0f\n", sum_insn / n, worst_insn, sum_insn, over, worst_backlog
+        if (cycles)
+            printf "mean_opt %.0f\nworst_opt %d\nmean_pess %.0f\nworst_pess %d\nsum_pess %.0f\nflash %.1f\ntaken %.1f\n",
+                sum_opt / n, worst_opt, sum_pess / n, worst_pess, sum_pess, flash / n, taken / n
+    }'
+# steps_of PHASE BUDGET OTHER [FILE]: STEPS_AWK over FILE (or stdin); lines other than counts
+# go to the file OTHER if not empty
+steps_of() {
+    awk -v phase="$1" -v budget="$2" -v other="$3" -v opt_refill=$OPT_REFILL -v opt_wait=$OPT_WAIT \
+        -v pess_refill=$PESS_REFILL -v pess_wait=$PESS_WAIT "$STEPS_AWK" ${4:+"$4"}
+}
+# val FILE NAME -> the value of NAME in a STEPS_AWK summary, "-" if it has none
+val() { awk -v name="$2" '$1 == name { print $2; found = 1; exit } END { if (!found) print "-" }' "$1"; }
+
+# run_job N: runs image N under QEMU; leaves $TMP/job-N.scene and .tight (summaries),
+# .status (0 or why it failed), .log (the image's output other than counts) and, if
+# profiled, .functions-PHASE (profile.sh's table of the phase: whole run or worst step)
+run_job() {
+    j=$1
+    target=$(word "$j" 1) scene=$(word "$j" 2) real=$(word "$j" 3) kind=$(word "$j" 4) elf=$(word "$j" 5)
+    base=$TMP/job-$j
+    cycles=
+    [ "$target" != cortex-m4f ] || cycles=1
+    echo "embedded_report: $target $scene $real $kind" >&2
+    case $kind in
+        *-whole)
+            # stream the counts into the summary; the profile (if any) costs ~1.5x the time
+            profile=
+            ! profiled "$target" "$scene" "$real" "$kind" || profile=profile=$base.profile
+            { status=0
+              CM_CYCLES=$cycles CM_PROFILE=$profile sh tests/qemu/count.sh "$elf" "$target" 3600 || status=$?
+              echo "$status" > "$base.status"; } |
+                steps_of scene "$(budget "$target")" "$base.log" > "$base.scene"
+            [ "$(cat "$base.status")" -eq 0 ] || return 0
+            [ -z "$profile" ] || sh tests/qemu/profile.sh "$base.profile" "$elf" > "$base.functions-whole"
+            ;;
+        *)
+            status=0
+            CM_CYCLES=$cycles sh tests/qemu/count.sh "$elf" "$target" 600 > "$base.out" || status=$?
+            echo "$status" > "$base.status"
+            grep -v '^\[insn\] [0-9]' "$base.out" > "$base.log" || :
+            [ "$status" -eq 0 ] || return 0
+            for phase in scene tight; do
+                steps_of $phase "$(budget "$target")" "" "$base.out" > "$base.$phase"
+            done
+            rm -f "$base.out"
+            profiled "$target" "$scene" "$real" "$kind" || return 0
+            # the worst step of each phase, per function: a profiled run per phase
+            steps=$(val "$base.scene" steps)
+            for phase in scene tight; do
+                if [ "$phase" = scene ]; then range="first=1,last=$steps"; else range="first=$((steps + 1))"; fi
+                CM_PROFILE="profile=$base.profile-$phase,$range" sh tests/qemu/count.sh "$elf" "$target" 600 \
+                    > /dev/null || { echo "profiling $phase failed" > "$base.status"; return 0; }
+                sh tests/qemu/profile.sh "$base.profile-$phase" "$elf" > "$base.functions-$phase"
+            done
+            ;;
+    esac
 }
 
-# qemu_failed WHAT OUTPUT: says that WHAT failed, with the image's last lines other than
-# counts, and stops
-qemu_failed() {
-    echo "embedded_report: $1 failed under QEMU:" >&2
-    grep -v '^\[insn\]' "$2" | tail -n 5 >&2
-    exit 1
-}
-
-# Cycles per step at dt = 2e-5 s on the boards of the real-time targets: a 168 MHz M4F
-# and a 480 MHz M7
-M4F_BUDGET=3360
-M7_BUDGET=9600
-budget() { # TARGET
-    case $1 in cortex-m4f) echo $M4F_BUDGET ;; cortex-m7) echo $M7_BUDGET ;; *) echo 0 ;; esac
-}
-
-# the whole runs first, two at a time (QEMU runs one image per host thread); each
-# output is ~80 MB of counts, deleted once summarised
-whole=0
-for spec in $specs; do
-    case $spec in *-whole:*) ;; *) continue ;; esac
-    whole=$((whole + 1))
-    echo "embedded_report: $spec: whole run" >&2
-    { status=0
-      sh tests/qemu/count.sh "$(echo "$spec" | cut -d: -f5)" "${spec%%:*}" 3600 > "$TMP/whole-$whole" || status=$?
-      echo $status > "$TMP/whole-$whole.status"; } &
-    [ $((whole % 2)) -ne 0 ] || wait
+# Two lanes of jobs, each run in order in the background: the longest jobs first, each
+# to the lane with less work so far (work ~ steps; a profiled whole run ~1.5x)
+j=1
+while [ "$j" -le "$jobs" ]; do
+    steps=1
+    case $(word "$j" 4) in *-whole)
+        steps=$(sed -n 's/^#define BS_SCENE_STEPS \([0-9]*\)u.*/\1/p' "configs/$(word "$j" 2).h") ;;
+    esac
+    profiled "$(word "$j" 1)" "$(word "$j" 2)" "$(word "$j" 3)" "$(word "$j" 4)" && factor=1.5 || factor=1
+    echo "$j $steps $factor"
+    j=$((j + 1))
+done | sort -k2,2nr | awk '{ lane = load[1] <= load[2] ? 1 : 2; load[lane] += $2 * $3; print $1 > (tmp "/lane-" lane) }' tmp="$TMP"
+for lane in 1 2; do
+    [ -f "$TMP/lane-$lane" ] || continue
+    ( while read -r j; do run_job "$j"; done < "$TMP/lane-$lane" ) &
 done
 wait
-whole=0
-for spec in $specs; do
-    case $spec in *-whole:*) ;; *) continue ;; esac
-    whole=$((whole + 1))
-    out=$TMP/whole-$whole
-    status=$(cat "$out.status")
-    [ "$status" -eq 0 ] || qemu_failed "the whole run of $spec (status $status)" "$out"
-    budget=$(budget "${spec%%:*}")
-    set -- $(step_counts "$out" scene "$budget")
-    contacts=$(sed -n 's/^scene: end .* most-contacts \([0-9]*\).*/\1/p' "$out")
-    echo "$spec" | awk -F: -v counts="$1 $2 $3 $contacts $4 $budget" \
-        '{ sub(/-whole$/, "", $4); print $1, $2, $3, $4, counts }' >> "$TMP/whole_summary"
-    rm -f "$out"
+
+# Stop on the first image that failed: its status, the last lines of its output
+j=1
+while [ "$j" -le "$jobs" ]; do
+    base=$TMP/job-$j
+    status=$(cat "$base.status" 2>/dev/null || echo "did not run")
+    for phase in scene tight; do
+        [ "$status" != 0 ] || [ ! -f "$base.$phase" ] || [ "$(val "$base.$phase" status)" = 0 ] ||
+            [ "$(val "$base.$phase" status)" = none ] || status="$phase phase ended with status $(val "$base.$phase" status)"
+    done
+    if [ "$status" != 0 ]; then
+        echo "embedded_report: $(cat "$TMP/spec-$j") failed under QEMU ($status):" >&2
+        tail -n 5 "$base.log" >&2 2>/dev/null || :
+        exit 1
+    fi
+    j=$((j + 1))
 done
 
-rows=""
-for spec in $specs; do
-    case $spec in *-whole:* | *-O2:*) continue ;; esac
-    target=$(echo "$spec" | cut -d: -f1)
-    scene=$(echo "$spec" | cut -d: -f2)
-    real=$(echo "$spec" | cut -d: -f3)
-    solve=$(echo "$spec" | cut -d: -f4)
-    elf=$(echo "$spec" | cut -d: -f5)
-    echo "embedded_report: $target $scene $real $solve" >&2
-    sh tests/qemu/count.sh "$elf" "$target" 600 > "$TMP/out" || qemu_failed "$elf" "$TMP/out"
-    set -- $(core_sizes "${elf%.elf}.map")
-    code=$1 ro=$2 scene_bytes=$3 sim_bytes=$4
-    set -- $(step_counts "$TMP/out" scene)
-    steps=$1 mean=$2 worst=$3
-    set -- $(step_counts "$TMP/out" tight)
-    tight_mean=$2 tight_worst=$3
-    stack=$(sed -n 's/^scene: end .* stack \([0-9]*\).*/\1/p' "$TMP/out")
-    tight_stack=$(sed -n 's/^tight: end .* stack \([0-9]*\).*/\1/p' "$TMP/out")
-    contacts=$(sed -n 's/^scene: end .* most-contacts \([0-9]*\).*/\1/p' "$TMP/out")
-    tight_contacts=$(sed -n 's/^tight: end .* most-contacts \([0-9]*\).*/\1/p' "$TMP/out")
-    [ "$stack" -gt "$tight_stack" ] || stack=$tight_stack
-    rows="$rows| $scene | $target | $real | $solve | $code | $((ro + scene_bytes)) | $sim_bytes | $stack | $steps | $mean | $worst ($contacts) | $tight_mean | $tight_worst ($tight_contacts) |
-"
-    echo "$target $scene $real $mean $worst $tight_worst $solve" >> "$TMP/summary"
-    echo "$target $scene $real $solve $code $mean $worst $tight_worst" >> "$TMP/levels"
-    # Cortex-M4F float, the scenes with targets: where the worst step of each phase goes
-    if [ "$target" = cortex-m4f ] && [ "$real" = float ] && { [ "$scene" = fig6 ] || [ "$scene" = fig6_1mode ]; }; then
-        for phase in scene tight; do
-            if [ "$phase" = scene ]; then range="first=1,last=$steps" counted=$worst
-            else range="first=$((steps + 1))" counted=$tight_worst; fi
-            CM_PROFILE="profile=$TMP/profile,$range" sh tests/qemu/count.sh "$elf" "$target" 600 \
-                > "$TMP/out" || { echo "embedded_report: profiling $elf failed" >&2; exit 1; }
-            sh tests/qemu/profile.sh "$TMP/profile" "$elf" > "$TMP/functions"
-            # the profile must see the same worst step as the count above
-            set -- $(head -n 1 "$TMP/functions")
-            [ "${5:-}" = "$counted" ] || {
-                echo "embedded_report: $elf $phase: profile's worst step ${5:-?} != counted $counted" >&2
-                exit 1
-            }
-            awk -v column="$solve $phase" 'NR > 1 { print $1, column, $3 }' "$TMP/functions" \
-                >> "$TMP/by_function-$scene"
-        done
+# job TARGET SCENE REAL KIND -> the job's number (empty if none)
+job() {
+    _k=1
+    while [ "$_k" -le "$jobs" ]; do
+        [ "$(cut -d: -f1-4 "$TMP/spec-$_k")" != "$1:$2:$3:$4" ] || { echo "$_k"; return; }
+        _k=$((_k + 1))
+    done
+}
+# value_of TARGET SCENE REAL KIND PHASE NAME -> one value of a job's summary ("-" if none)
+value_of() {
+    _j=$(job "$1" "$2" "$3" "$4")
+    if [ -n "$_j" ] && [ -f "$TMP/job-$_j.$5" ]; then val "$TMP/job-$_j.$5" "$6"; else echo -; fi
+}
+# ceil_div A B, per_mhz A MHZ: backlog in samples (rounded up) and in microseconds
+ceil_div() { awk -v a="$1" -v b="$2" 'BEGIN { q = int(a / b); if (q * b < a) ++q; print q }'; }
+per_mhz() { awk -v a="$1" -v f="$2" 'BEGIN { printf "%.0f", a / f }'; }
+
+# The ram variant must compute what the image with the constants in flash computes: the
+# same hash at the end of each phase
+j=1
+while [ "$j" -le "$jobs" ]; do
+    kind=$(word "$j" 4)
+    case $kind in *-ram*) ;; *) j=$((j + 1)); continue ;; esac
+    twin=$(job "$(word "$j" 1)" "$(word "$j" 2)" "$(word "$j" 3)" "$(echo "$kind" | sed 's/-ram//')")
+    for phase in scene tight; do
+        [ -n "$twin" ] && [ -f "$TMP/job-$j.$phase" ] || continue
+        [ "$(val "$TMP/job-$j.$phase" hash)" = "$(val "$TMP/job-$twin.$phase" hash)" ] || {
+            echo "embedded_report: $(cat "$TMP/spec-$j") $phase: hash $(val "$TMP/job-$j.$phase" hash)" \
+                 "differs from the flash image's $(val "$TMP/job-$twin.$phase" hash)" >&2
+            exit 1
+        }
+    done
+    j=$((j + 1))
+done
+
+# --- the profiles: consistency with the counts, then tables ---------------------------
+# whole-run profiles: every step profiled, the same worst step, the same total cycles
+for scene in fig6 fig6_1mode; do
+    j=$(job cortex-m4f $scene float subspace-whole)
+    [ -n "$j" ] && [ -f "$TMP/job-$j.functions-whole" ] || continue
+    set -- $(head -n 1 "$TMP/job-$j.functions-whole")
+    total=$(awk 'NR > 1 { sum += $4 } END { printf "%.0f", sum }' "$TMP/job-$j.functions-whole")
+    if [ "$2" != "$(val "$TMP/job-$j.scene" steps)" ] || [ "$5" != "$(val "$TMP/job-$j.scene" worst_insn)" ] ||
+       [ "$total" != "$(val "$TMP/job-$j.scene" sum_pess)" ]; then
+        echo "embedded_report: $scene whole-run profile ($2 steps, worst $5, $total cycles) disagrees with the counts" \
+             "($(val "$TMP/job-$j.scene" steps), $(val "$TMP/job-$j.scene" worst_insn), $(val "$TMP/job-$j.scene" sum_pess))" >&2
+        exit 1
     fi
 done
-
-# The -O2 images -> markdown rows: code, mean, worst and tight worst, each at -O2 and at CM_OPT
-for spec in $specs; do
-    case $spec in *-O2:*) ;; *) continue ;; esac
-    elf=$(echo "$spec" | cut -d: -f5)
-    echo "embedded_report: $spec" >&2
-    sh tests/qemu/count.sh "$elf" "${spec%%:*}" 600 > "$TMP/out" || qemu_failed "$elf" "$TMP/out"
-    set -- $(core_sizes "${elf%.elf}.map") $(step_counts "$TMP/out" scene) $(step_counts "$TMP/out" tight)
-    code=$1 mean=$6 worst=$7 tight_worst=${11}
-    echo "$spec" | awk -F: -v o2="$code $mean $worst $tight_worst" -v levels="$TMP/levels" '{
-        sub(/-O2$/, "", $4)
-        while ((getline line < levels) > 0) {
-            split(line, f, " ")
-            if (f[1] == $1 && f[2] == $2 && f[3] == $3 && f[4] == $4) twin = f[5] " " f[6] " " f[7] " " f[8]
+# per-phase worst-step profiles: the same worst step as counted
+j=1
+while [ "$j" -le "$jobs" ]; do
+    for phase in scene tight; do
+        [ -f "$TMP/job-$j.functions-$phase" ] || continue
+        set -- $(head -n 1 "$TMP/job-$j.functions-$phase")
+        [ "${5:-}" = "$(val "$TMP/job-$j.$phase" worst_insn)" ] || {
+            echo "embedded_report: $(cat "$TMP/spec-$j") $phase: profile's worst step ${5:-?} != counted $(val "$TMP/job-$j.$phase" worst_insn)" >&2
+            exit 1
         }
-        if (twin == "") { print "embedded_report: no image at the default level for " $0 > "/dev/stderr"; exit 1 }
-        split(o2, a, " "); split(twin, b, " ")
-        printf "| %s | %s | %s | %d | %d | %d | %d | %d | %d | %d | %d | %.2f |\n", $2, $1, $4,
-            a[1], b[1], a[2], b[2], a[3], b[3], a[4], b[4], a[4] / b[4]
-    }' >> "$TMP/level_rows"
+    done
+    j=$((j + 1))
 done
 
-# Core code of the scenes that leave something out, as a share of fig6's (subspace), per level
-leaner=$(awk -F'|' '{ for (i = 2; i <= 6; ++i) gsub(/ /, "", $i) }
-    $4 == "subspace" { o2[$2] = $5; high[$2] = $6 }
-    END {
-        if (!o2["fig6"]) exit
-        printf "fig6_1mode %.0f %% and fig6_frictionless %.0f %% at -O2, %.0f %% and %.0f %% at the default level",
-            100 * o2["fig6_1mode"] / o2["fig6"], 100 * o2["fig6_frictionless"] / o2["fig6"],
-            100 * high["fig6_1mode"] / high["fig6"], 100 * high["fig6_frictionless"] / high["fig6"]
-    }' "$TMP/level_rows")
+# --- the targets (issue: Cortex-M4F at 168 MHz, float, dt = 2e-5 s, default core) ----
+# target_row TEXT LIMIT OP FLASH RAM: a row; met if the flash or the ram value meets it
+# (a cell may carry more after its number, "N (T µs)": the number is compared)
+target_row() {
+    awk -v text="$1" -v limit="$2" -v op="$3" -v flash="$4" -v ram="$5" 'BEGIN {
+        met = 0
+        if (flash != "-" && (op == "<" ? flash + 0 < limit + 0 : flash + 0 <= limit + 0)) met = 1
+        if (ram != "-" && (op == "<" ? ram + 0 < limit + 0 : ram + 0 <= limit + 0)) met = 1
+        printf "| %s | %s %s | %s | %s | %s |\n", text, op == "<" ? "<" : "≤", limit, flash, ram, met ? "yes" : "**no**"
+    }'
+}
+# backlog_cell TARGET SCENE REAL KIND -> "N (M µs)"
+backlog_cell() {
+    b=$(value_of "$1" "$2" "$3" "$4" scene backlog)
+    [ "$b" != - ] || { echo -; return; }
+    echo "$(ceil_div "$b" "$(budget "$1")") ($(per_mhz "$b" "$(mhz "$1")") µs)"
+}
+m4f() { value_of cortex-m4f "$1" float "$2" "$3" "$4"; } # m4f SCENE KIND PHASE NAME
+targets="$(target_row "fig6: mean estimated cycles per step (whole 60 s run)" 2700 "<=" \
+              "$(m4f fig6 subspace-whole scene mean_pess)" "$(m4f fig6 subspace-ram-whole scene mean_pess)")
+$(target_row "fig6: largest backlog over the whole run, samples (time)" 64 "<=" \
+              "$(backlog_cell cortex-m4f fig6 float subspace-whole)" "$(backlog_cell cortex-m4f fig6 float subspace-ram-whole)")
+$(target_row "fig6: worst step of the whole run, estimated cycles" 8000 "<=" \
+              "$(m4f fig6 subspace-whole scene worst_pess)" "$(m4f fig6 subspace-ram-whole scene worst_pess)")
+$(target_row "fig6: tight case (every corner and the stop in contact), worst step, estimated cycles" 12000 "<=" \
+              "$(m4f fig6 subspace tight worst_pess)" "$(m4f fig6 subspace-ram tight worst_pess)")
+$(target_row "fig6_1mode: mean estimated cycles per step (whole run)" 1700 "<=" \
+              "$(m4f fig6_1mode subspace-whole scene mean_pess)" "$(m4f fig6_1mode subspace-ram-whole scene mean_pess)")
+$(target_row "fig6_1mode: worst step of the whole run, estimated cycles" 4000 "<=" \
+              "$(m4f fig6_1mode subspace-whole scene worst_pess)" "$(m4f fig6_1mode subspace-ram-whole scene worst_pess)")
+$(target_row "Cortex-M7, fig6 in double: mean instructions per step (whole run)" 4800 "<" \
+              "$(value_of cortex-m7 fig6 double subspace-whole scene mean_insn)" -)
+$(target_row "Cortex-M7, fig6 in double: worst instructions per step (whole run)" 4800 "<" \
+              "$(value_of cortex-m7 fig6 double subspace-whole scene worst_insn)" -)"
+targets_met=$(echo "$targets" | grep -c '| yes |$' || :)
+targets_all=$(echo "$targets" | grep -c '^|')
 
-# by_function_table SCENE -> markdown rows: instructions per function in the worst step of
-# each phase and solve, costliest in the sweeps build's tight phase first, then the total
-by_function_table() {
-    awk '
+# --- whole runs ---------------------------------------------------------------------
+# rows in argument order, so that the constants-in-flash row of a scene comes first
+# (host/reports/accuracy.sh reads the first M4F float row of a scene: "mean insn/step")
+whole_rows=""
+j=1
+while [ "$j" -le "$jobs" ]; do
+    case $(word "$j" 4) in *-whole) ;; *) j=$((j + 1)); continue ;; esac
+    target=$(word "$j" 1) s=$TMP/job-$j.scene
+    case $(word "$j" 4) in *-ram-*) variant=ram ;; *) variant=flash ;; esac
+    if [ "$(val "$s" mean_pess)" = - ]; then unit=" (insn)"; else unit=; fi
+    b=$(val "$s" backlog)
+    whole_rows="$whole_rows| $(word "$j" 2) | $target | $(word "$j" 3) | $variant | $(val "$s" steps) | $(val "$s" mean_insn) | $(val "$s" worst_insn) | $(val "$s" mean_opt) | $(val "$s" worst_opt) | $(val "$s" mean_pess) | $(val "$s" worst_pess) | $(val "$s" flash) | $(val "$s" contacts) | $(budget "$target") | $(val "$s" over)$unit | $(ceil_div "$b" "$(budget "$target")")$unit | $(per_mhz "$b" "$(mhz "$target")")$unit |
+"
+    j=$((j + 1))
+done
+
+# --- the cost images ----------------------------------------------------------------
+rows=""
+j=1
+while [ "$j" -le "$jobs" ]; do
+    kind=$(word "$j" 4)
+    case $kind in *-whole | *-O2) j=$((j + 1)); continue ;; esac
+    base=$TMP/job-$j
+    set -- $(core_sizes "$(word "$j" 5 | sed 's/\.elf$/.map/')")
+    ram=$4
+    [ "$5" -eq 0 ] || ram="$(($4 + $5)) ($4 + $5)"
+    stack=$(val "$base.scene" stack) tight_stack=$(val "$base.tight" stack)
+    [ "$stack" -gt "$tight_stack" ] || stack=$tight_stack
+    build=$(echo "$kind" | sed 's/^subspace/default/; s/-ram$/, ram/')
+    rows="$rows| $(word "$j" 2) | $(word "$j" 1) | $(word "$j" 3) | $build | $1 | $(($2 + $3)) | $ram | $stack | $(val "$base.scene" steps) | $(val "$base.scene" mean_insn) | $(val "$base.scene" worst_insn) ($(val "$base.scene" contacts)) | $(val "$base.tight" mean_insn) | $(val "$base.tight" worst_insn) ($(val "$base.tight" contacts)) | $(val "$base.scene" mean_pess) | $(val "$base.scene" worst_pess) | $(val "$base.tight" mean_pess) | $(val "$base.tight" worst_pess) |
+"
+    j=$((j + 1))
+done
+
+# The sweeps build against the default core (M4F float cost images): mean/worst
+# instructions of each phase, and whether the first steps (at most two contacts, where
+# both builds run the same solve) end in the same state
+sweeps_scene="" sweeps_tight="" sweeps_states="the same states (equal hashes): their instruction counts there differ only by
+code generation (the compiler inlines the smaller solve differently)"
+for scene in fig6 fig6_1mode; do
+    for phase in scene tight; do
+        cell="$scene $(m4f $scene subspace $phase mean_insn)/$(m4f $scene subspace $phase worst_insn) against"
+        cell="$cell $(m4f $scene sweeps $phase mean_insn)/$(m4f $scene sweeps $phase worst_insn)"
+        if [ $phase = scene ]; then sweeps_scene="$sweeps_scene${sweeps_scene:+, }$cell"
+        else sweeps_tight="$sweeps_tight${sweeps_tight:+, }$cell"; fi
+    done
+    [ "$(m4f $scene subspace scene hash)" = "$(m4f $scene sweeps scene hash)" ] ||
+        sweeps_states="**different states** (the hashes differ)"
+done
+most_whole=$(j=1; while [ "$j" -le "$jobs" ]; do
+    case $(word "$j" 4) in *-whole) val "$TMP/job-$j.scene" contacts ;; esac; j=$((j + 1)); done | sort -n | tail -n 1)
+
+# --- where the cycles go ------------------------------------------------------------
+# whole_functions SCENE -> rows: per function, pessimistic cycles and instructions per
+# step (mean over the whole run), share of the cycles, instructions in the run's worst step
+whole_functions() {
+    j=$(job cortex-m4f "$1" float subspace-whole)
+    awk -v steps="$(val "$TMP/job-$j.scene" steps)" '
+        NR == 1 { next }
+        { name[NR] = $1; insn[NR] = $2; worst[NR] = $3; cycles[NR] = $4; total_c += $4; total_i += $2; total_w += $3 }
+        END {
+            for (i = 2; i <= NR; ++i)
+                printf "%015.0f | `%s` | %.1f | %.1f %% | %.1f | %d |\n", cycles[i], name[i], cycles[i] / steps,
+                    100 * cycles[i] / total_c, insn[i] / steps, worst[i]
+            printf "%015.0f | **the step** | **%.1f** | **100 %%** | **%.1f** | **%d** |\n", -1, total_c / steps,
+                total_i / steps, total_w
+        }' "$TMP/job-$j.functions-whole" | LC_ALL=C sort -r | sed 's/^[-0-9]* //'
+}
+# worst_functions SCENE -> rows: instructions per function in the worst step of each
+# phase, default core and sweeps build, costliest in the default core's tight step first
+worst_functions() {
+    for kind in subspace sweeps; do
+        j=$(job cortex-m4f "$1" float $kind)
+        for phase in scene tight; do
+            awk -v column="$kind $phase" 'NR > 1 { print $1, column, $3 }' "$TMP/job-$j.functions-$phase"
+        done
+    done | awk '
         { count[$1 SUBSEP $2 " " $3] = $4; seen[$1] = 1; total[$2 " " $3] += $4 }
         END {
             split("subspace scene,subspace tight,sweeps scene,sweeps tight", column, ",")
             for (f in seen) {
                 line = "| `" f "` |"
                 for (c = 1; c <= 4; ++c) line = line " " (count[f SUBSEP column[c]] + 0) " |"
-                printf "%012d %s\n", count[f SUBSEP "sweeps tight"] + 0, line
+                printf "%012d %s\n", count[f SUBSEP "subspace tight"] + 0, line
             }
             line = "| **the step** |"
             for (c = 1; c <= 4; ++c) line = line " **" total[column[c]] "** |"
             printf "%012d %s\n", -1, line
-        }' "$TMP/by_function-$1" | sort -r | cut -d' ' -f2-
+        }' | LC_ALL=C sort -r | cut -d' ' -f2-
 }
-
-# outside_solve SCENE -> "FIND SMOOTH STEP": of the sweeps build's worst tight step, the
-# instructions that find the contacts (corners, the beam under them), those of the smooth
-# part of the step, and the whole step
+# outside_solve SCENE -> "FIND SMOOTH STEP": of the default core's worst tight step, the
+# instructions that find the contacts, those of the smooth part, and the whole step
 outside_solve() {
     awk '
-        $2 " " $3 != "sweeps tight" { next }
-        $1 == "bs_contact_detect" || $1 == "bs_shape_deflection" { find += $4 }
-        $1 == "bs_sim_step" || $1 == "bs_beam_force" || $1 ~ /^bs_excitation_/ { smooth += $4 }
-        { step += $4 }
-        END { printf "%d %d %d\n", find, smooth, step }' "$TMP/by_function-$1"
+        NR == 1 { next }
+        $1 == "bs_contact_detect" || $1 == "beam_under_side" || $1 ~ /^bs_shape_/ { find += $3 }
+        $1 == "bs_sim_step" || $1 == "bs_beam_force" || $1 ~ /^bs_excitation_/ { smooth += $3 }
+        { step += $3 }
+        END { printf "%d %d %d\n", find, smooth, step }' "$TMP/job-$(job cortex-m4f "$1" float subspace).functions-tight"
 }
-
-# Real-time margins on the M4F (168 MHz) and M7 (480 MHz) at dt = 2e-5 s: the cycle
-# budget per step over the worst instruction count of the whole run (where counted) and
-# of any phase
-margins=$(awk -v m4f=$M4F_BUDGET -v m7=$M7_BUDGET '
-    FILENAME ~ /whole_summary$/ { whole[$1 " " $2 " " $3 " " $4] = $7; next }
-    $1 == "cortex-m4f" || $1 == "cortex-m7" {
-        worst = $5 > $6 ? $5 : $6
-        budget = $1 == "cortex-m4f" ? m4f : m7
-        run = whole[$1 " " $2 " " $3 " " $7]
-        if (run != "" && run > worst) worst = run
-        printf "| %s | %s | %s | %s | %.0f | %s | %s | %d | %.2f |\n", $2, $1, $3, $7, budget,
-            run == "" ? "-" : run, run == "" ? "-" : sprintf("%.2f", budget / run), worst, budget / worst
-    }' "$TMP/whole_summary" "$TMP/summary")
-targets=$(awk '
-    FILENAME ~ /whole_summary$/ { whole[$1 " " $2 " " $3 " " $4] = $7; next }
-    $1 == "cortex-m4f" && ($2 == "fig6_1mode" || $2 == "fig6") {
-        run = whole[$1 " " $2 " " $3 " " $7]
-        worst = $5 > $6 ? $5 : $6
-        if (run != "" && run > worst) worst = run
-        limit = $2 == "fig6_1mode" ? 1500 : 6000
-        printf "| %s | %s | %d | %s | %d | %d | %s |\n", $2, $7, $5, run == "" ? "-" : run, $6, limit,
-            worst <= limit ? "yes" : "**no**"
-    }' "$TMP/whole_summary" "$TMP/summary")
-whole_rows=$(awk '{
-        printf "| %s | %s | %s | %s | %d | %d | %d (%d) | %d | %d |\n", $2, $1, $3, $4, $5, $6, $7, $8, $10, $9
-    }' "$TMP/whole_summary")
-
-# The targets' verdict in numbers: the sweeps build's worst tight step, split
 breakdown=""
-for scene in fig6_1mode fig6; do
-    [ -f "$TMP/by_function-$scene" ] || continue
-    limit=$([ "$scene" = fig6_1mode ] && echo 1500 || echo 6000)
-    set -- $(outside_solve "$scene")
+for scene in fig6 fig6_1mode; do
+    j=$(job cortex-m4f $scene float subspace-whole)
+    [ -n "$j" ] && [ -f "$TMP/job-$j.functions-whole" ] || continue
+    set -- $(outside_solve $scene)
     breakdown="$breakdown
 ### $scene
 
-| function | subspace: worst scene step | subspace: worst tight step | sweeps: worst scene step | sweeps: worst tight step |
-|---|---|---|---|---|
-$(by_function_table "$scene")
+The whole 60 s run ($(val "$TMP/job-$j.scene" steps) steps, constants in flash): estimated cycles
+(pessimistic) and instructions per step, mean over the run, and the instructions of the run's
+worst step ($(val "$TMP/job-$j.scene" worst_insn) instructions), per function.
 
-In the sweeps build's worst tight step ($3 instructions; target $limit), finding the contacts
-(\`bs_contact_detect\`, \`bs_shape_deflection\`: corner positions, the beam under each
-corner, gaps, force directions) takes $1 and the smooth part of the step (\`bs_sim_step\`,
-\`bs_beam_force\`, \`bs_excitation_*\`) $2, together $(($1 + $2)) ($(awk -v a=$(($1 + $2)) -v b=$limit 'BEGIN { printf "%.0f", 100 * a / b }') % of the target);
-the contact solve and its set-up (Delassus matrix, two sweeps, the residual, the update of
-the velocities) the remaining $(($3 - $1 - $2)).
+| function | cycles/step (pessimistic) | share of the cycles | insn/step | worst step of the run: insn |
+|---|---|---|---|---|
+$(whole_functions $scene)
+
+The worst step of each phase of the cost images (instructions per function), default core
+and sweeps build:
+
+| function | default: worst scene step | default: worst tight step | sweeps: worst scene step | sweeps: worst tight step |
+|---|---|---|---|---|
+$(worst_functions $scene)
+
+In the default core's worst tight step ($3 instructions), finding the contacts
+(\`bs_contact_detect\`, \`beam_under_side\`, \`bs_shape_*\`: corner positions, the beam
+under each corner, gaps, force directions) takes $1 and the smooth part of the step
+(\`bs_sim_step\`, \`bs_beam_force\`, \`bs_excitation_*\`) $2; the contact solve and its set-up (Delassus
+matrix, the active-set systems, the residual, the update of the velocities) the remaining
+$(($3 - $1 - $2)).
 "
 done
 
+# --- optimisation level -------------------------------------------------------------
+# The -O2 images -> rows: code, mean, worst and tight worst, each at -O2 and at CM_OPT
+level_rows=""
+j=1
+while [ "$j" -le "$jobs" ]; do
+    kind=$(word "$j" 4)
+    case $kind in *-O2) ;; *) j=$((j + 1)); continue ;; esac
+    solve=${kind%-O2} scene=$(word "$j" 2)
+    twin=$(job cortex-m4f "$scene" float "$solve")
+    [ -n "$twin" ] || { echo "embedded_report: no image at the default level for $(cat "$TMP/spec-$j")" >&2; exit 1; }
+    set -- $(core_sizes "$(word "$j" 5 | sed 's/\.elf$/.map/')")
+    code_o2=$1
+    set -- $(core_sizes "$(word "$twin" 5 | sed 's/\.elf$/.map/')")
+    level_rows="$level_rows$(awk -v scene="$scene" -v solve="$solve" -v a="$code_o2 $(val "$TMP/job-$j.scene" mean_insn) $(val "$TMP/job-$j.scene" worst_insn) $(val "$TMP/job-$j.tight" worst_insn)" \
+        -v b="$1 $(val "$TMP/job-$twin.scene" mean_insn) $(val "$TMP/job-$twin.scene" worst_insn) $(val "$TMP/job-$twin.tight" worst_insn)" 'BEGIN {
+        split(a, x, " "); split(b, y, " ")
+        printf "| %s | cortex-m4f | %s | %d | %d | %d | %d | %d | %d | %d | %d | %.2f |\n", scene, solve == "subspace" ? "default" : solve,
+            x[1], y[1], x[2], y[2], x[3], y[3], x[4], y[4], x[4] / y[4] }')
+"
+    j=$((j + 1))
+done
+# Core code of the scenes that leave something out, as a share of fig6's (default core)
+leaner=$(echo "$level_rows" | awk -F'|' '{ for (i = 2; i <= 6; ++i) gsub(/ /, "", $i) }
+    $4 == "default" { o2[$2] = $5; high[$2] = $6; if ($2 != "fig6") order[++n] = $2 }
+    END {
+        if (!o2["fig6"]) exit
+        for (i = 1; i <= n; ++i)
+            printf "%s%s %.0f %% at -O2 and %.0f %% at the default level", (i > 1 ? "; " : ""), order[i],
+                100 * o2[order[i]] / o2["fig6"], 100 * high[order[i]] / high["fig6"]
+    }')
+
+# --- the page -----------------------------------------------------------------------
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+git diff --quiet HEAD -- core port configs tests/embedded 2>/dev/null ||
+    commit="$commit with uncommitted changes to the measured sources"
+fig6_flash_reads=$(m4f fig6 subspace-whole scene flash)
+fig6_ram_reads=$(m4f fig6 subspace-ram-whole scene flash)
 cat > "$OUT" <<EOF
 # The core on Cortex-M
 
 Produced by \`make embedded-report\` (host/reports/embedded_report.sh) on $(date -u +%Y-%m-%d), commit $commit,
 with $(arm-none-eabi-gcc --version | head -n 1) (\`$CM_OPT\`, \`-std=c99\`, no fused multiply-add) and
-$(qemu-system-arm --version | head -n 1). Each image is tests/embedded/scene_run.c with the core compiled
-against one scene (configs/NAME.h, \`beamslider gen\`) and the generic embedded port
-(port/embedded); see the script's header for what each column measures.
+$(qemu-system-arm --version | head -n 1) with the counting plugin tests/qemu/insn-plugin (instruction
+counts exact; Cortex-M4 cycles estimated, next section). Each image is tests/embedded/scene_run.c with
+the core compiled against one scene (configs/NAME.h, \`beamslider gen\`) and the generic embedded
+port (port/embedded); the script's header says what each column measures. Every count is per
+step of the simulation and includes about 10 instructions of harness (the call through a
+volatile pointer and the two marks around it).
 
-**Instruction counts are not cycles.** QEMU counts executed instructions exactly and
-deterministically but has no timing model: a Cortex-M4 takes 1 cycle for most integer and
-single-precision instructions, 2 for loads, 14 for a division or square root, more for taken
-branches and flash wait states; a Cortex-M7 may issue two per cycle. Cycles per step on silicon
-will be somewhat higher than these counts on the M4F and may be lower on the M7; measure on
-the board (DWT_CYCCNT) before relying on a margin below about 1.5.
+## Targets
 
-| scene | target | real | contact solve | core code [B] | constants [B] | RAM: bs_sim [B] | stack [B] | steps counted | mean insn/step | worst insn/step (contacts) | tight: mean | tight: worst (contacts) |
-|---|---|---|---|---|---|---|---|---|---|---|---|---|
-$rows
-"scene": the first steps of the scene from its start (20 000 steps
-on the FPU targets, 2 000 on the M3 and M0+: settling, impacts and contact with one or two
-corners). "tight": a quarter as many steps with every corner and the clamp stop in contact.
-Constants are the core's read-only data and the scene (mode-shape table, modal data); the
-M3 and M0+ have no FPU and compute float in software (libgcc), hence the large counts.
-"contact solve": "subspace" is the default core; "sweeps" the same core built with
-\`-DBS_WITH_SUBSPACE=0\`, whose contact solve is at most pgs_max_sweeps (here 2) plain
-Gauss-Seidel sweeps: no Gaussian eliminations, a hard bound on the cost of a step, at the
-price of steps left unconverged where two corners of one face touch (what that does to
-accuracy: docs/accuracy.md, "Without the subspace step").
+The embedded issue's targets: Cortex-M4F at 168 MHz, float, dt = 2e-5 s (a budget of 3360
+cycles per step), the default core; a Cortex-M7 at 480 MHz (9600 cycles per step) in double.
+M4F values are the pessimistic cycle estimate (below): "flash" with the scene's constants in
+flash as a firmware keeps them, "ram" with the scene copied to RAM (or CCM) at start-up and
+the literal pools replaced by MOVW/MOVT (\`-mslow-flash-data\`). A target is met when either
+estimate meets it. The Cortex-M7 has no public per-instruction timing: its rows compare
+instructions per step with half its budget. Met: $targets_met of the $targets_all targets.
+
+| target | limit | flash | ram | met |
+|---|---|---|---|---|
+$targets
+
+## The cycle model
+
+The counting plugin estimates Cortex-M4 cycles from the instructions it executes
+(tests/qemu/insn-plugin/insncount.c, "Cycle model"). What it counts:
+
+- each instruction's base cycles from the Cortex-M4 Technical Reference Manual's timing
+  tables: 1 for data processing, single-precision add, multiply, compare, convert and move,
+  2 for a single load or store and MLA/MLS, 3 for LDRD/STRD and the FPU's multiply-accumulate,
+  1 + N for a load or store multiple of N words, 14 for VDIV and VSQRT, 12 for SDIV/UDIV (the
+  manual gives 2 to 12: the early exit is not modelled);
+- each branch taken (a branch, or a load into the PC, after which execution does not fall
+  through) costs a pipeline refill of P cycles more: P = 1 in the optimistic estimate, P = 3
+  in the pessimistic one (the manual's range);
+- each data read from flash costs W wait states more: W = 0 in the optimistic estimate,
+  W = 5 in the pessimistic one (168 MHz on a typical flash, every read of constant data:
+  the scene's modal data and shape table, literal pools, switch tables). Reads are counted
+  per memory access to the code region (the first 4 MiB, where the images keep code and
+  constants; RAM is elsewhere).
+
+Left out, so the estimate is not a measurement: load and store pipelining (neighbouring
+loads or stores can take 1 cycle each instead of 2: the base cycles are an upper bound
+there); FPU result latencies and register dependencies; bus contention between fetches and
+data reads; instruction fetch wait states (assumed hidden by the flash accelerator's cache,
+the ART of an STM32F4, which holds the hot loop; a cache miss costs more); any data cache in
+front of the flash (the pessimistic W is then the upper end). QEMU executes the code exactly,
+so the instruction counts and the numbers C, T and F the estimate is built from are exact and
+deterministic; the error is in the weights. Measure on the board (DWT_CYCCNT) before relying
+on a margin of a few percent. The Cortex-M7 (dual issue, branch prediction, caches) has no
+public per-instruction timing: its cycles are not estimated, and its rows give instructions
+only (where a backlog needs a cost, instructions stand in for cycles, marked "(insn)").
 
 ## Whole runs
 
 Every step of the scene's run from t = 0 to t_end (fig6 and fig6_1mode: 60 s, 3 000 000
-steps at dt = 2e-5 s: the drift to the clamp, the jump and the walk back), float, on the
-boards of the real-time targets. The "scene" phase above is its first 0.4 s. The cycle
-budget is clock x dt (168 MHz M4F, 480 MHz M7); the last column counts the steps whose
-instructions alone exceed it.
+steps: the drift to the clamp, the jump and the walk back; fig8: 120 s, 6 000 000 steps of
+relaxation cycles, many jumps), default core, on the boards of the targets. Cycles are the
+two estimates; "flash reads" the data reads from flash per step (mean), which the ram variant
+removes (fig6: $fig6_flash_reads per step in flash, $fig6_ram_reads in ram). Steps over budget and the
+largest backlog use the pessimistic estimate: the backlog is the delay of a twin that reads
+one sample per dt from a FIFO (Lindley recursion, script header), in samples (rounded up) and
+microseconds; it stays bounded when the mean is under the budget and the worst stretches are
+short.
 
-| scene | target | real | contact solve | steps | mean insn/step | worst insn/step (contacts) | cycle budget | steps over budget |
-|---|---|---|---|---|---|---|---|---|
+| scene | target | real | variant | steps | mean insn/step | worst insn/step | mean cycles: optimistic | worst cycles: optimistic | mean cycles: pessimistic | worst cycles: pessimistic | flash reads/step | most contacts | cycle budget | steps over budget | largest backlog [samples] | largest backlog [µs] |
+|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|
 $whole_rows
+No whole run of the sweeps build (\`-DBS_WITH_SUBSPACE=0\`): both builds solve one and two
+contacts alike (core/src/bs_pgs.c: the pair exactly, by its active-set systems); the sweeps
+build leaves the active-set step out only where three or more contacts are active at once,
+which these runs never have (most contacts at once over all of them: $most_whole). In the cost
+images' first steps (at most two contacts) the two builds reach $sweeps_states; mean/worst
+instructions there, default against sweeps: $sweeps_scene. The tight phase, five contacts,
+is where they differ: $sweeps_tight.
 
-## Targets of the embedded issue (Cortex-M4F, worst case of every phase)
+## Per image
 
-| scene | contact solve | worst: scene | worst: whole run | worst: tight | target | met |
-|---|---|---|---|---|---|---|
-$targets
+Each cost image runs two phases. "scene": the first steps of the scene from its start
+(20 000 steps on the FPU targets, 2 000 on the M3 and M0+: settling, impacts and contact with
+one or two corners). "tight": a quarter as many steps with every corner and the clamp stop in
+contact (the slot pushed 2 um into the beam; the contact solve's worst case). Constants are
+the core's read-only data and the scene (mode-shape table, modal data), in flash; RAM is the
+bs_sim, plus the scene's copy in the ram variant ("ram": \`-DBS_RUN_SCENE_IN_RAM=1
+-mslow-flash-data\`, the same states as with the constants in flash, bit for bit: the
+script compares the hashes, here and in the whole runs). The M3 and M0+ have no FPU and compute float
+in software (libgcc), hence the large counts. "sweeps" is the core built with
+\`-DBS_WITH_SUBSPACE=0\`. Cycles (pessimistic estimate) on the M4F only.
 
-## Where the instructions go (Cortex-M4F, float)
+| scene | target | real | build | core code [B] | constants [B] | RAM [B] | stack [B] | steps counted | mean insn/step | worst insn/step (contacts) | tight: mean insn | tight: worst insn (contacts) | mean cycles | worst cycles | tight: mean cycles | tight: worst cycles |
+|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|
+$rows
+## Where the cycles go (Cortex-M4F, float)
 
-Instructions executed in each function during the worst step of each phase, for the default
-core ("subspace") and the sweeps build (tests/qemu/profile.sh on a profile from the same
-QEMU plugin; code inlined into a function counts there). The last row is the whole step; the
-script checks that it equals the worst count of the tables above.
+Per function (tests/qemu/profile.sh on profiles from the same plugin; code inlined into a
+function counts there). The script checks that the whole-run profile's total equals the
+counted cycles and that each profile's worst step equals the counted worst step.
 $breakdown
 ## Optimisation level
 
@@ -338,23 +608,13 @@ core code in bytes and instructions per step (scene: mean and worst; tight: wors
 loops over modes and contact rows have lengths fixed by the compiled scene, which the
 higher level unrolls; the last column is the tight worst step at -O2 over the default.
 
-Core code of the scenes that leave something out, as a share of fig6's (subspace solve):
+Core code of the scenes that leave something out, as a share of fig6's (default core):
 $leaner.
 Where a share is above 100 %, unrolling the leaner scene's loops at the higher level adds
 more code than its switches removed.
 
-| scene | target | contact solve | code: -O2 | code: default | mean: -O2 | mean: default | worst: -O2 | worst: default | tight worst: -O2 | tight worst: default | tight worst -O2 / default |
+| scene | target | build | code: -O2 | code: default | mean: -O2 | mean: default | worst: -O2 | worst: default | tight worst: -O2 | tight worst: default | tight worst -O2 / default |
 |---|---|---|---|---|---|---|---|---|---|---|---|
-$(cat "$TMP/level_rows" 2>/dev/null)
-
-## Real-time margin at dt = 2e-5 s
-
-Cycle budget per step (clock x dt) over the worst instruction count of the whole run (where
-counted) and of any phase, the tight one included; above 1 means the step fits in real time
-*if* one instruction took one cycle (see above).
-
-| scene | board | real | contact solve | cycle budget | worst: whole run | budget / worst: whole run | worst: any phase | budget / worst: any phase |
-|---|---|---|---|---|---|---|---|---|
-$margins
+$level_rows
 EOF
 echo "embedded_report: wrote $OUT" >&2

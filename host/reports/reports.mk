@@ -5,6 +5,10 @@
 #   make accuracy       error against run time vs the reference -> docs/accuracy.md
 #   make stability      the stiff and extreme cases -> docs/stability.md
 #   make bench          steps per second -> docs/performance.md
+#   make baseline-check [BASELINE=COMMIT]
+#                       the slow dynamics of fig6 over ensembles, this tree against
+#                       COMMIT (default: 0.5.0, before the contact-solve redesign)
+#                       -> docs/baseline.md
 #   make figures        PCS sweeps and free runs of the papers' figures (double,
 #                       all cores) -> docs/figures/*.png and the tables of
 #                       docs/validation.md section 7 (host/reports/figures/figures.sh;
@@ -12,7 +16,7 @@
 #
 # `make test` also runs sweep-check (host/reports/figures/check_sweep.sh).
 
-.PHONY: fig6-report accuracy stability bench figures sweep-check deps-figures
+.PHONY: fig6-report accuracy stability bench baseline-check figures sweep-check deps-figures
 
 fig6-report:
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
@@ -25,8 +29,6 @@ $(OBJ)/bs-stability: host/reports/stability.c $(HOST_LIB_OBJ) $(CORE_OBJ)
 accuracy: $(BUILD)/bs-reference
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
 	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
-	$(MAKE) --no-print-directory REAL=double $(SWEEPS_FLAGS) $(SWEEPS_BUILD)/double/beamslider
-	$(MAKE) --no-print-directory REAL=float $(SWEEPS_FLAGS) $(SWEEPS_BUILD)/float/beamslider
 	sh host/reports/accuracy.sh
 
 stability:
@@ -38,6 +40,12 @@ bench:
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
 	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
 	sh host/reports/bench.sh
+
+BASELINE ?= b0fa6bb
+baseline-check:
+	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
+	sh host/reports/baseline_check.sh $(BASELINE)
 
 figures: deps-figures
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider

@@ -5,7 +5,8 @@
 #   make embedded-test     every image of EMB_CHECKS under QEMU against its host
 #                          twin, bit for bit (part of `make test`), the QEMU
 #                          harness self-test and the core symbol check of each image
-#   make embedded-report   flash, RAM, stack, instructions per step -> docs/embedded.md
+#   make embedded-report   flash, RAM, stack, instructions and estimated cycles
+#                          per step, backlog of whole runs -> docs/embedded.md
 #   make TARGET=cortex-m4f [SCENE=fig6] [REAL=float] [STEPS=N] [run]
 #                          one image of tests/embedded/scene_run.c (and its QEMU run)
 #
@@ -35,7 +36,9 @@ endef
 emb_image = $(eval $(call emb__image,$(strip $1),$(strip $2),$(strip $3),$(strip $4),$(strip $5),$(strip $6),$7))
 EMB_SRC := tests/embedded/scene_run.c $(CORE_SRC)
 # TARGET:SCENE:REAL:STEPS run in `make test` (soft-float targets: fewer steps)
+# (fig6_frictionless: the core compiled without friction, a switch no other image turns off)
 EMB_CHECKS := cortex-m4f:fig6:float:20000 cortex-m4f:fig6_1mode:float:20000 \
+              cortex-m4f:fig6_frictionless:float:20000 \
               cortex-m7:fig6:double:20000 cortex-m7:fig6_1mode:float:20000 \
               cortex-m3:fig6_1mode:float:2000 cortex-m0plus:fig6_1mode:float:2000
 # ... and in `make test-long`, the scenes' whole runs (t_end / dt steps)
@@ -47,13 +50,22 @@ EMB_COST_SCENES := fig6 fig6_1mode fig6_frictionless
 # a hard bound on the cost of a step), on the FPU targets' float builds
 EMB_SWEEPS_TARGETS := cortex-m4f:float cortex-m7:float
 EMB_SWEEPS_SCENES := fig6 fig6_1mode
-# ... and the scenes' whole runs (t_end / dt steps, no tight phase), both solves,
-# TARGET:SCENE for the boards of the real-time targets
-EMB_WHOLE := cortex-m4f:fig6 cortex-m4f:fig6_1mode cortex-m7:fig6
+# ... and the "ram" variant of the M4F float images of these scenes: the scene
+# copied to RAM before the run (scene_run.c, BS_RUN_SCENE_IN_RAM) and no literal
+# pools (-mslow-flash-data: constants built from MOVW/MOVT), so that a step reads
+# no data from flash, whose wait states the cycle estimate charges per read
+EMB_RAM_SCENES := fig6 fig6_1mode
+EMB_RAM_FLAGS := -DBS_RUN_SCENE_IN_RAM=1 -mslow-flash-data
+# ... and the scenes' whole runs (t_end / dt steps, no tight phase; default
+# core), TARGET:SCENE:REAL on the boards of the real-time targets, and the M4F
+# float ones once more in the ram variant
+EMB_WHOLE := cortex-m4f:fig6:float cortex-m4f:fig6_1mode:float cortex-m4f:fig8:float cortex-m7:fig6:double
+EMB_WHOLE_RAM := fig6 fig6_1mode fig8
 # ... and M4F float images at -O2 instead of CM_OPT's -O3 (a later -O wins), SCENE:SOLVE:
 # what the optimisation level buys and costs
 EMB_O2 := fig6:subspace fig6:sweeps fig6_1mode:subspace fig6_1mode:sweeps fig6_frictionless:subspace
 emb_steps = $(if $(filter cortex-m3 cortex-m0plus,$1),2000,20000)
+emb_whole_flags := -DBS_RUN_COST=1 -DBS_RUN_TIGHT_STEPS=0
 
 emb_word = $(word $2,$(subst :, ,$1))
 $(foreach c,$(EMB_CHECKS),$(call emb_image,check-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1),\
@@ -64,8 +76,12 @@ $(foreach s,$(EMB_COST_SCENES),$(foreach t,$(EMB_COST_TARGETS),$(call emb_image,
     $(call emb_word,$t,1),$s,$(call emb_word,$t,2),$(call emb_steps,$(call emb_word,$t,1)),subspace,-DBS_RUN_COST=1)))
 $(foreach s,$(EMB_SWEEPS_SCENES),$(foreach t,$(EMB_SWEEPS_TARGETS),$(call emb_image,cost-$s-$(call emb_word,$t,2)-sweeps,\
     $(call emb_word,$t,1),$s,$(call emb_word,$t,2),20000,sweeps,-DBS_RUN_COST=1)))
-$(foreach w,$(EMB_WHOLE),$(foreach v,subspace sweeps,$(call emb_image,whole-$(call emb_word,$w,2)-float-$v,\
-    $(call emb_word,$w,1),$(call emb_word,$w,2),float,BS_SCENE_STEPS,$v,-DBS_RUN_COST=1 -DBS_RUN_TIGHT_STEPS=0)))
+$(foreach s,$(EMB_RAM_SCENES),$(call emb_image,cost-$s-float-ram,cortex-m4f,$s,float,20000,subspace,\
+    -DBS_RUN_COST=1 $(EMB_RAM_FLAGS)))
+$(foreach w,$(EMB_WHOLE),$(call emb_image,whole-$(call emb_word,$w,2)-$(call emb_word,$w,3),$(call emb_word,$w,1),\
+    $(call emb_word,$w,2),$(call emb_word,$w,3),BS_SCENE_STEPS,subspace,$(emb_whole_flags)))
+$(foreach s,$(EMB_WHOLE_RAM),$(call emb_image,whole-$s-float-ram,cortex-m4f,$s,float,BS_SCENE_STEPS,subspace,\
+    $(emb_whole_flags) $(EMB_RAM_FLAGS)))
 $(foreach c,$(EMB_O2),$(call emb_image,cost-$(call emb_word,$c,1)-float-$(call emb_word,$c,2)-O2,cortex-m4f,\
     $(call emb_word,$c,1),float,20000,$(call emb_word,$c,2),-DBS_RUN_COST=1 -O2))
 
@@ -98,17 +114,24 @@ embedded-long: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_LONG_PAIRS),$(call emb_word
 	$(if $(CM_TOOLS_OK),@CHECK_EMBEDDED_TIMEOUT=1800 sh tests/check_embedded.sh $(EMB_LONG_PAIRS),@echo "$(CM_TOOLS_MSG)")
 TEST_LONG += embedded-long
 
-# report arguments TARGET:SCENE:REAL:SOLVE:ELF (whole runs: SOLVE is subspace-whole or
-# sweeps-whole; -O2 images: subspace-O2 or sweeps-O2)
+# report arguments TARGET:SCENE:REAL:KIND:ELF, KIND = SOLVE[-ram][-O2|-whole] with
+# SOLVE subspace (the default core) or sweeps: the per-phase cost images (no
+# suffix), their ram variant (-ram), the -O2 images, the whole runs (-whole)
 EMB_COST_SPECS := $(foreach s,$(EMB_COST_SCENES),$(foreach t,$(EMB_COST_TARGETS),\
     $(call emb_word,$t,1):$s:$(call emb_word,$t,2):subspace:$(call cm_elf,cost-$s-$(call emb_word,$t,2),$(call emb_word,$t,1)))) \
     $(foreach s,$(EMB_SWEEPS_SCENES),$(foreach t,$(EMB_SWEEPS_TARGETS),\
     $(call emb_word,$t,1):$s:$(call emb_word,$t,2):sweeps:$(call cm_elf,cost-$s-$(call emb_word,$t,2)-sweeps,$(call emb_word,$t,1)))) \
-    $(foreach w,$(EMB_WHOLE),$(foreach v,subspace sweeps,\
-    $(call emb_word,$w,1):$(call emb_word,$w,2):float:$v-whole:$(call cm_elf,whole-$(call emb_word,$w,2)-float-$v,$(call emb_word,$w,1)))) \
+    $(foreach s,$(EMB_RAM_SCENES),cortex-m4f:$s:float:subspace-ram:$(call cm_elf,cost-$s-float-ram,cortex-m4f)) \
+    $(foreach w,$(EMB_WHOLE),$(call emb_word,$w,1):$(call emb_word,$w,2):$(call emb_word,$w,3):subspace-whole:$(call cm_elf,\
+    whole-$(call emb_word,$w,2)-$(call emb_word,$w,3),$(call emb_word,$w,1))) \
+    $(foreach s,$(EMB_WHOLE_RAM),cortex-m4f:$s:float:subspace-ram-whole:$(call cm_elf,whole-$s-float-ram,cortex-m4f)) \
     $(foreach c,$(EMB_O2),cortex-m4f:$(call emb_word,$c,1):float:$(call emb_word,$c,2)-O2:$(call cm_elf,cost-$(call emb_word,$c,1)-float-$(call emb_word,$c,2)-O2,cortex-m4f))
-embedded-report: $(foreach c,$(EMB_COST_SPECS),$(call emb_word,$c,5))
-	CM_OPT='$(CM_OPT)' sh host/reports/embedded_report.sh $(EMB_COST_SPECS)
+# The images are built two at a time, then measured (the script runs QEMU two at a time).
+embedded-report-images: $(foreach c,$(EMB_COST_SPECS),$(call emb_word,$c,5))
+embedded-report:
+	$(MAKE) --no-print-directory -j2 embedded-report-images
+	CM_OPT='$(CM_OPT)' CM_BUILD='$(CM_BUILD)' sh host/reports/embedded_report.sh $(EMB_COST_SPECS)
+.PHONY: embedded-report embedded-report-images
 
 
 ifneq ($(TARGET),host)
