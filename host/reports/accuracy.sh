@@ -157,33 +157,34 @@ pareto=$(awk '{ e = $6 < 0 ? -$6 : $6; c[NR] = $5; err[NR] = e; sc[NR] = $1; lin
               if (!dom) { split(line[i], f, " "); printf "| %s | %s | %s | %s | %s | %s | %s |\n", f[1], f[2], f[3], f[4], f[5], f[6], f[7] } } }' \
     "$TMP/points" | sort -t'|' -k2,2 -k6,6g)
 
-# Per scene and dt: the median error and cost over the caps >= 2 and both
+# Per scene and dt: the median error and cost over the starts and both
 # precisions, and the Cortex-M4F cost implied by the float build's mean
-# instructions per step over the whole run at dt 2e-5 s (docs/embedded.md; the
-# count per step barely depends on dt, the contacts do).
-m4f() { # the default core's whole-run mean insn/step in docs/embedded.md ("Whole runs"), by column name
+# estimated cycles per step (pessimistic, constants in flash) over the whole run
+# at dt 2e-5 s (docs/embedded.md; the cost per step barely depends on dt, the
+# contacts do).
+m4f() { # the default core's whole-run mean cycles in docs/embedded.md ("Whole runs"), by column name
     awk -F'|' -v s="$1" 'function cell(i,   x) { x = $i; gsub(/ /, "", x); return x }
         /^$/ { split("", col) }
         /^\| scene \| target \|/ { for (i = 2; i < NF; ++i) col[cell(i)] = i; next }
-        ("meaninsn/step" in col) && ("steps" in col) && cell(col["scene"]) == s && cell(col["target"]) == "cortex-m4f" && cell(col["real"]) == "float" \
-            && (!("contactsolve" in col) || cell(col["contactsolve"]) == "subspace") { print cell(col["meaninsn/step"]); exit }' docs/embedded.md
+        ("meancycles:pessimistic" in col) && cell(col["scene"]) == s && cell(col["target"]) == "cortex-m4f" \
+            && cell(col["real"]) == "float" && cell(col["variant"]) == "flash" { print cell(col["meancycles:pessimistic"]); exit }' docs/embedded.md
 }
 by_dt=""
 for scene in fig6 fig6_1mode; do
-    insn=$(m4f "$scene")
+    cycles=$(m4f "$scene")
     for dt in ${DTS:-5e-6 1e-5 2e-5 4e-5 8e-5}; do
-        by_dt="$by_dt$(awk -v s="$scene" -v dt="$dt" -v insn="${insn:-0}" '
+        by_dt="$by_dt$(awk -v s="$scene" -v dt="$dt" -v cycles="${cycles:-0}" '
             function median(a, n,   i, j, t) { for (i = 2; i <= n; ++i) for (j = i; j > 1 && a[j - 1] > a[j]; --j) { t = a[j]; a[j] = a[j - 1]; a[j - 1] = t }
                                               return n % 2 ? a[(n + 1) / 2] : (a[n / 2] + a[n / 2 + 1]) / 2 }
             $1 == s && $3 == dt && $4 != 1 && ($2 == "float" || $2 == "double") { e = $6 < 0 ? -$6 : $6; m = $7 < 0 ? -$7 : $7; err[++n] = e; amp[n] = m; cost[n] = $5 }
             END { if (!n) exit
-                  m4 = insn > 0 ? sprintf("%.0f M (%.0f %% of 168 MHz)", insn / dt / 1e6, 100 * insn / dt / 168e6) : "-"
+                  m4 = cycles > 0 ? sprintf("%.0f M (%.0f %% of 168 MHz)", cycles / dt / 1e6, 100 * cycles / dt / 168e6) : "-"
                   printf "| %s | %s | %.1f %% | %.1f %% | %.4f | %s |\n", s, dt, 100 * median(err, n), 100 * median(amp, n), median(cost, n), m4 }' "$TMP/points")
 "
     done
 done
 
-share_fig6=$(awk -v insn="$(m4f fig6)" 'BEGIN { printf "%.0f", 100 * insn / 2e-5 / 168e6 }')
+share_fig6=$(awk -v cycles="$(m4f fig6)" 'BEGIN { printf "%.0f", 100 * cycles / 2e-5 / 168e6 }')
 
 # the contact solve at dt 2e-5 s: unconverged steps and the most systems in a step
 solve_verdict=$(awk '{ runs++; u += $3; if ($4 > m) m = $4 }
@@ -311,24 +312,23 @@ $pareto
 
 Single runs scatter, so the front above is ragged; per step size, medians over the
 $REPEATS starts and both precisions are steadier. The last column is the cost on a Cortex-M4F:
-the float build's mean instructions per step over the whole 60 s run at dt 2e-5 s
-(docs/embedded.md, "Whole runs") divided by dt, as a share of a 168 MHz clock if one
-instruction took one cycle (it takes more, see docs/embedded.md):
+the float build's mean estimated cycles per step over the whole 60 s run at dt 2e-5 s
+(pessimistic, constants in flash; docs/embedded.md, "Whole runs") divided by dt, as a share
+of a 168 MHz clock:
 
-| scene | dt [s] | median high-branch speed error | median amplitude error | median cost [s/s] | Cortex-M4F instructions per simulated second |
+| scene | dt [s] | median high-branch speed error | median amplitude error | median cost [s/s] | Cortex-M4F cycles per simulated second (estimated) |
 |---|---|---|---|---|---|
 $by_dt
 **For a digital twin** we recommend the defaults, dt = 2e-5 s, in float (the contact
 solve's cap does not enter: next section). The step: the time discretisation dominates the error, so a smaller dt
 lowers it (medians above) at proportionally more cost, and from 4e-5 s on the high-branch
 speed is off by 10 % and more. The board: the last column is a mean; the five-mode scene
-at 2e-5 s asks for instructions worth $share_fig6 % of a 168 MHz Cortex-M4F's cycles even
-at one cycle each, an M4F takes more than one cycle for many of them (docs/porting.md) and
-the worst steps cost several times the mean (docs/embedded.md), so on an M4F it does not
-run in real time; a 480 MHz Cortex-M7 has the room. The one-mode scene fits an M4F
-on average, but it is a different model (turning point, docs/validation.md), and its rows
-compare single runs with a single reference run, so their errors carry the whole
-run-to-run scatter.
+at 2e-5 s asks for $share_fig6 % of a 168 MHz Cortex-M4F's cycles by the pessimistic
+estimate, and the worst steps cost several times the mean (docs/embedded.md), so on an
+M4F it does not run in real time at this step; a 480 MHz Cortex-M7 has the room (by its
+instruction count). The one-mode scene is cheaper but not enough for an M4F either, and it
+is a different model (turning point, docs/validation.md); its rows compare single runs with
+a single reference run, so their errors carry the whole run-to-run scatter.
 
 ## The contact solve
 
