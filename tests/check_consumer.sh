@@ -20,8 +20,8 @@
 #       compiles without -O); with BEAMSLIDER_SCENE=fig6_1mode, float: the same
 #       hash as consumer.c linked with SCENE_LIB; cross-compiled for a
 #       Cortex-M4F (library only: the embedded port by default, freestanding)
-#   (c) CMake, find_package(beamslider 0.5): both imported targets, the same
-#       hashes as (a); find_package(beamslider 0.6) is refused
+#   (c) CMake, find_package(beamslider MAJOR.MINOR) of this version: both imported
+#       targets, the same hashes as (a); the next minor version is refused
 #   (d) the consumer compiled against the float headers and linked with the
 #       double library (and the reverse) stops with BS_E_BUILD, not a crash
 #   and CM_LIB references nothing but the port's math (check_core_symbols.sh).
@@ -163,20 +163,22 @@ if have cmake && have "$CC"; then
         skip "CMake cross build" arm-none-eabi-gcc "gcc-arm-none-eabi libnewlib-arm-none-eabi"
     fi
 
-    cmake_build "CMake find_package(beamslider 0.5) in $stage" "$build/consumer-package" \
-        -DCONSUMER_USE_PACKAGE=ON -DCMAKE_PREFIX_PATH="$stage" &&
+    minor=${version%.*}                                             # MAJOR.MINOR
+    next=${version%%.*}.$((${minor#*.} + 1))                        # MAJOR.(MINOR+1)
+    cmake_build "CMake find_package(beamslider $minor) in $stage" "$build/consumer-package" \
+        -DCONSUMER_USE_PACKAGE=ON -DCMAKE_PREFIX_PATH="$stage" -DCONSUMER_PACKAGE_VERSION="$minor" &&
         run package-double 0 "$build/consumer-package/consumer-double" &&
         run package-float 0 "$build/consumer-package/consumer-float" &&
         same_hash "beamslider::double is the installed double library" "$out/package-double.txt" "$out/c-double.txt" &&
         same_hash "beamslider::float is the installed float library" "$out/package-float.txt" "$out/c-float.txt"
-    rm -rf "$build/consumer-package-0.6"
-    if cmake -S tests/consumer -B "$build/consumer-package-0.6" -DCONSUMER_USE_PACKAGE=ON \
-        -DCMAKE_PREFIX_PATH="$stage" -DCONSUMER_PACKAGE_VERSION=0.6 > "$out/package-0.6.txt" 2>&1; then
-        fail "find_package(beamslider 0.6) refuses $version" "$(cat "$out/package-0.6.txt")"
+    rm -rf "$build/consumer-package-next"
+    if cmake -S tests/consumer -B "$build/consumer-package-next" -DCONSUMER_USE_PACKAGE=ON \
+        -DCMAKE_PREFIX_PATH="$stage" -DCONSUMER_PACKAGE_VERSION="$next" > "$out/package-next.txt" 2>&1; then
+        fail "find_package(beamslider $next) refuses $version" "$(cat "$out/package-next.txt")"
     else
-        check_has "find_package(beamslider 0.6) refuses $version" "$out/package-0.6.txt" "$version"
+        check_has "find_package(beamslider $next) refuses $version" "$out/package-next.txt" "$version"
     fi
-    rm -rf "$build/consumer-package-0.6"
+    rm -rf "$build/consumer-package-next"
 else
     skip "CMake consumers" "cmake and $CC" "cmake gcc"
 fi
