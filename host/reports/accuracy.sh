@@ -132,12 +132,17 @@ xargs -P "$JOBS" -L 1 sh -c 'every=$(awk -v dt="$3" "BEGIN { printf \"%d\", 8e-5
         "$bin" run "configs/$1.ini" --dt "$3" --pgs-iters "$4" --s0 "$5" --t-end 0.05 --out "$TMP/$tag-w.csv" --every "$every" > /dev/null 2>&1 || true;
         "$bin" run "configs/$1.ini" --dt "$3" --pgs-iters "$4" --s0 "$5" --t-end 30 --periods "$TMP/$tag-p.csv" > "$TMP/$tag.json" 2> /dev/null || true' sh < "$TMP/jobs"
 
+rows=""
 : > "$TMP/points"
 while read -r scene real dt cap s0; do
     tag="$scene-$real-$dt-$cap-$s0"
     status=$(json status "$TMP/$tag.json")
     capname=$([ "$cap" = 100000 ] && echo none || echo "$cap")
-    [ "$status" = ok ] || continue
+    if [ "$status" != ok ]; then
+        rows="$rows| $scene | $real | $dt | $capname | $s0 | - | - | - | - | - | - | $status |
+"
+        continue
+    fi
     cost=$(awk -v w="$(json wall_s "$TMP/$tag.json")" 'BEGIN { printf "%.4f", w / 30 }')
     set -- $(w_error "$TMP/ref-$scene-w.csv" "$TMP/$tag-w.csv") $(speeds "$TMP/$tag-p.csv")
     errors=$(awk -v low="$3" -v high="$4" -v amp="$5" -v scene="$scene" '$1 == scene {
@@ -145,6 +150,8 @@ while read -r scene real dt cap s0; do
                    (high > 0 && $3 > 0) ? sprintf("%+.3f", high / $3 - 1) : "-",
                    (amp > 0 && $4 > 0) ? sprintf("%+.4f", amp / $4 - 1) : "-" }' "$TMP/reference-speeds")
     set -- "$1" "$2" $errors
+    rows="$rows| $scene | $real | $dt | $capname | $s0 | $1 | $2 | $3 | $4 | $5 | $cost | ok, $(json unconverged_steps "$TMP/$tag.json") unconverged |
+"
     [ "$4" != - ] && echo "$scene $real $dt $capname $cost $4 $5" >> "$TMP/points"
     [ "$dt" = 2e-5 ] && echo "$scene $real $(json unconverged_steps "$TMP/$tag.json") $(json max_systems "$TMP/$tag.json")" >> "$TMP/solves"
 done < "$TMP/jobs"
@@ -368,8 +375,8 @@ $long_verdict
 Errors relative to the reference at dt 5e-6 s (signed; "-": the run did not cross the
 stretch within 30 s).
 
-| scene | build | dt [s] | cap | w RMS | w max | low-branch speed | high-branch speed | settled amplitude | cost [s/s] | status |
-|---|---|---|---|---|---|---|---|---|---|---|
+| scene | build | dt [s] | cap | s0 | w RMS | w max | low-branch speed | high-branch speed | settled amplitude | cost [s/s] | status |
+|---|---|---|---|---|---|---|---|---|---|---|---|
 $rows
 DOC
 echo "accuracy: wrote $OUT and $FIG" >&2

@@ -59,7 +59,8 @@ EMB_RAM_FLAGS := -DBS_RUN_SCENE_IN_RAM=1 -mslow-flash-data
 # ... and the scenes' whole runs (t_end / dt steps, no tight phase; default
 # core), TARGET:SCENE:REAL on the boards of the real-time targets, and the M4F
 # float ones once more in the ram variant
-EMB_WHOLE := cortex-m4f:fig6:float cortex-m4f:fig6_1mode:float cortex-m4f:fig8:float cortex-m7:fig6:double
+EMB_WHOLE := cortex-m4f:fig6:float cortex-m4f:fig6_1mode:float cortex-m4f:fig8:float \
+             cortex-m7:fig6:double cortex-m7:fig6_1mode:double cortex-m7:fig8:double
 EMB_WHOLE_RAM := fig6 fig6_1mode fig8
 # ... and M4F float images at -O2 instead of CM_OPT's -O3 (a later -O wins), SCENE:SOLVE:
 # what the optimisation level buys and costs
