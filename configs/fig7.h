@@ -35,6 +35,7 @@
 #define BS_WITH_STRETCHING 1
 #define BS_WITH_PCS 0
 #define BS_WITH_IMPLICIT 0
+#define BS_WITH_PIEZO 0
 #endif
 #endif
 
@@ -779,12 +780,26 @@ static const bs_scene bs_compiled_scene = {
     BS_R(0.20000000000000001),
     /* e_n */
     BS_R(0.5),
+    /* load */
+    0,
+    /* piezo_theta [N/(V sqrt(kg))] */
+    { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) },
+    /* piezo_capacitance_inv [1/F] */
+    BS_R(0.0),
+    /* load_decay */
+    BS_R(0.0),
+    /* load_gain [Ohm] */
+    BS_R(0.0),
+    /* load_conductance [1/Ohm] */
+    BS_R(0.0),
+    /* storage_capacitance_inv [1/F] */
+    BS_R(0.0),
+    /* bridge_drop [V] */
+    BS_R(0.0),
     /* base_accel [m/s^2] */
     BS_R(14.0),
-    /* base_velocity [m/s] */
-    BS_R(0.021424703877755139),
-    /* base_displacement [m] */
-    BS_R(3.2786995446392587e-05),
+    /* frequency [Hz] */
+    BS_R(104.0),
     /* phase_step_half [turns 2^-64] */
     UINT64_C(19184613836657936),
     /* dt [s] */

@@ -44,7 +44,7 @@ $1: $$(LIB_OBJ_$1)
 	$4 rcs $$@ $$^
 
 $$(LIB_OBJ_$1): $$(LIB_OBJDIR_$1)/%.o: %.c $$(LIB_OBJDIR_$1)/include/bs_build_config.h \
-        $$(LIB_OBJDIR_$1)/flags $(wildcard core/*/*.h port/*/bs_port.h)
+        $$(LIB_OBJDIR_$1)/flags $(wildcard core/*/*.h port/*/bs_port.h configs/*.h)
 	@mkdir -p $$(@D)
 	$2 $$(LIB_FLAGS_$1) -c -o $$@ $$<
 

@@ -36,7 +36,7 @@ check_status "run fig6 --t-end 0.2 --every 10 exits 0" 0 $? "$tmp/run.err"
 if [ -f "$csv" ]; then pass "run writes the --out file"; else fail "run writes the --out file"; fi
 touch "$csv"
 header=$(head -n 1 "$csv")
-if [ "$header" = "t,w_sensor,s,z_c,beta,contacts,pgs_iters,pgs_residual" ]; then
+if [ "$header" = "t,w_sensor,s,z_r,beta,contacts,pgs_iters,pgs_residual" ]; then
     pass "CSV header"
 else
     fail "CSV header" "got: $header"
@@ -85,6 +85,125 @@ printf '[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\nacceleratio
 "$bin" run "$tmp/q\"b\\c.ini" >"$tmp/name.json" 2>"$tmp/name.err"
 check_status "run of a scene whose file name holds a quote and a backslash exits 0" 0 $? "$tmp/name.err"
 check_has "the summary escapes the quote and the backslash of the name" "$tmp/name.json" '{"scene":"q\"b\\c","model"'
+
+# ---- a negative load is refused with its file, line and range
+printf '[scene]\nbase = mssp2023.ini\n[transducer]\nload = resistor\nresistance = -5\n' >"$tmp/negative.ini"
+"$bin" run "$tmp/negative.ini" --out "$tmp/negative.csv" >/dev/null 2>"$tmp/e"
+check_status "a negative load resistance exits 2" 2 $? "$tmp/e"
+check_has "... naming file, line and the allowed range" "$tmp/e" "negative.ini:5: [transducer] resistance = -5: out of range; allowed: a finite number in (0, inf) Ohm"
+[ -e "$tmp/negative.csv" ] && fail "a refused scene writes no --out file" "$tmp/negative.csv exists" || pass "a refused scene writes no --out file"
+
+# ---- a scene with a transducer: the step rows end in v, p, v_s and the
+# summary gives the harvested energy and power; without one (fig6 above)
+# the columns and keys stay as they were
+cp configs/mssp2023.ini "$tmp/mssp2023.ini"
+printf '[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\nacceleration = 14\n[transducer]\nload = resistor\n[run]\ns0 = 0.3\nt_end = 0.02\n' \
+    >"$tmp/harvester.ini"
+"$bin" run "$tmp/harvester.ini" --out "$tmp/harvester.csv" >"$tmp/harvester.json" 2>"$tmp/e"
+check_status "run of a scene with a transducer exits 0" 0 $? "$tmp/e"
+touch "$tmp/harvester.csv"
+header=$(head -n 1 "$tmp/harvester.csv")
+if [ "$header" = "t,w_sensor,s,z_r,beta,contacts,pgs_iters,pgs_residual,v,p,v_s" ]; then
+    pass "with a transducer the CSV header ends in v,p,v_s"
+else
+    fail "with a transducer the CSV header ends in v,p,v_s" "got: $header"
+fi
+if report=$(awk -F, 'NF != 11 { printf "line %d has %d fields\n", NR, NF; ++bad } END { exit NR < 2 || bad > 0 }' \
+                "$tmp/harvester.csv"); then
+    pass "with a transducer every CSV line has 11 fields"
+else
+    fail "with a transducer every CSV line has 11 fields" "$report"
+fi
+if grep -q '"energy_j":[0-9][^,]*,"power_mean_w":[0-9][^,]*,"power_last_w":[0-9][^,]*,"power_window_s":0.02,' \
+        "$tmp/harvester.json"; then
+    pass "with a transducer the summary has energy_j, power_mean_w, power_last_w, power_window_s"
+else
+    fail "with a transducer the summary has energy_j, power_mean_w, power_last_w, power_window_s" \
+        "$(cat "$tmp/harvester.json")"
+fi
+if grep -q -e '"energy_j"' -e '"power_' "$tmp/run.json"; then
+    fail "without a transducer the summary has no energy or power" "$(cat "$tmp/run.json")"
+else
+    pass "without a transducer the summary has no energy or power"
+fi
+
+# ---- run --excitation: a recorded base acceleration (docs/twin.md). The
+# record is fig6's own excitation, -14 cos(2 pi 124 t) m/s^2, sampled at
+# 500 kHz (10 samples per step) for 0.06 s. Its step means miss the
+# harmonic's by at most a omega^2 / (8 fs^2) = 4.3e-6 m/s^2 (3e-7 of a;
+# docs/twin.md), so the replay of 0.05 s must end where the harmonic run ends:
+# within 1e-6 in s. That is 30 ulps of s in float, while reading the record
+# 2 us (one sample) late moves s by 1e-5 and a 1 % larger amplitude by 1.6e-4.
+# Not longer: after about 0.06 s the contact sequence amplifies differences
+# of 1e-9 to 1e-4 (as float against double already shows).
+record="$tmp/fig6_harmonic.csv"
+awk 'BEGIN {
+    pi = atan2(0, -1); fs = 500000
+    print "# beamslider base acceleration"; print "# sample_rate = " fs " Hz"; print "# unit = m/s^2"
+    for (k = 0; k <= 0.06 * fs; ++k) printf "%.12g\n", -14 * cos(2 * pi * 124 * k / fs)
+}' >"$record"
+"$bin" run configs/fig6.ini --t-end 0.05 >"$tmp/harmonic.json" 2>"$tmp/e"
+check_status "run fig6 --t-end 0.05 exits 0" 0 $? "$tmp/e"
+"$bin" run configs/fig6.ini --t-end 0.05 --excitation "$record" >"$tmp/replay.json" 2>"$tmp/e"
+check_status "run fig6 --excitation (its own harmonic, 500 kHz) --t-end 0.05 exits 0" 0 $? "$tmp/e"
+s_harmonic=$(sed -n 's/.*"s_final":\([^,]*\),.*/\1/p' "$tmp/harmonic.json")
+s_replay=$(sed -n 's/.*"s_final":\([^,]*\),.*/\1/p' "$tmp/replay.json")
+if awk -v a="$s_replay" -v b="$s_harmonic" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(a != "" && d <= 1e-6) }'; then
+    pass "the replay of the harmonic ends within 1e-6 of its s_final ($s_replay against $s_harmonic)"
+else
+    fail "the replay of the harmonic ends within 1e-6 of its s_final" "replay $s_replay, harmonic $s_harmonic"
+fi
+check_has "the summary names the recorded excitation" "$tmp/replay.json" \
+    "\"excitation\":\"file\",\"excitation_file\":\"$record\",\"excitation_format\":\"csv\",\"excitation_rate\":500000,\"excitation_samples\":30001,\"excitation_latency\":0,"
+check_has "the harmonic run's summary says harmonic" "$tmp/harmonic.json" '"excitation":"harmonic",'
+"$bin" run configs/fig6.ini --excitation "$record" >"$tmp/whole.json" 2>"$tmp/e"
+check_status "run --excitation without --t-end exits 0" 0 $? "$tmp/e"
+check_has "without --t-end the run lasts the record's whole steps (3000 of 0.06 s)" "$tmp/whole.json" '"t_end":0.06,"steps":3000,'
+# a WAV file: mono, 16 bit, 1000 Hz, four samples (3 ms: 150 steps)
+wav_head='RIFF\054\000\000\000WAVEfmt \020\000\000\000\001\000'
+printf "$wav_head"'\001\000\350\003\000\000\320\007\000\000\002\000\020\000data\010\000\000\000\000\100\000\300\377\177\000\200' \
+    >"$tmp/mono.wav"
+"$bin" run configs/fig6.ini --excitation "$tmp/mono.wav" --scale 10 >"$tmp/wav.json" 2>"$tmp/e"
+check_status "run --excitation of a WAV file with --scale exits 0" 0 $? "$tmp/e"
+check_has "the WAV record's summary" "$tmp/wav.json" '"excitation_format":"wav","excitation_rate":1000,"excitation_samples":4,'
+check_has "the WAV run lasts its 150 steps" "$tmp/wav.json" '"steps":150,'
+
+# ---- bad records: exit 2, the file and what is wrong on stderr, no output
+check_record_error() { # DESCRIPTION MESSAGE ARGS...: run fig6 with ARGS, expect exit 2 and MESSAGE
+    description=$1
+    message=$2
+    shift 2
+    rm -f "$tmp/bad_record.csv"
+    "$bin" run configs/fig6.ini --out "$tmp/bad_record.csv" "$@" >"$tmp/o" 2>"$tmp/e"
+    check_status "$description exits 2" 2 $? "$tmp/e"
+    check_has "$description: message" "$tmp/e" "$message"
+    if [ -e "$tmp/bad_record.csv" ]; then fail "$description creates no --out file"; else pass "$description creates no --out file"; fi
+}
+printf '# beamslider base acceleration\n# sample_rate = 1000 Hz\n# unit = m/s^2\n1\n2\nnan\n' >"$tmp/nan.csv"
+check_record_error "a NaN in a record" "$tmp/nan.csv:6: 'nan' is not a finite number" --excitation "$tmp/nan.csv"
+printf '# beamslider base acceleration\n# sample_rate = 1000 Hz\n# unit = m/s^2\n0,1\n0.001,2\n0.003,3\n' >"$tmp/gap.csv"
+check_record_error "a gap in a record's time column" "$tmp/gap.csv:6: a gap" --excitation "$tmp/gap.csv"
+printf '1\n2\n' >"$tmp/headless.csv"
+check_record_error "a record without its header" "$tmp/headless.csv:1: not a base acceleration record" \
+    --excitation "$tmp/headless.csv"
+check_record_error "a record shorter than --t-end" \
+    "$record covers t = 0 .. 0.06 s (0.06 s: 30001 samples at 500000 Hz); the run needs t = 0.001 .. 0.101 s" \
+    --excitation "$record" --t-end 0.1 --latency 0.001
+check_record_error "--scale with a CSV record" "--scale is for WAV files" --excitation "$record" --scale 9.8
+check_record_error "a WAV record without --scale" "$tmp/mono.wav is a WAV file: give --scale S" \
+    --excitation "$tmp/mono.wav"
+printf "$wav_head"'\002\000\350\003\000\000\240\017\000\000\004\000\020\000data\010\000\000\000\000\000\000\000\000\000\000\000' \
+    >"$tmp/stereo.wav"
+check_record_error "a stereo WAV without --channel" "$tmp/stereo.wav has 2 channels: choose one with --channel N" \
+    --excitation "$tmp/stereo.wav" --scale 10
+check_record_error "a missing record" "$tmp/none.csv: cannot open" --excitation "$tmp/none.csv"
+check_record_error "--latency without --excitation" "--latency is about a recorded excitation" --latency 0.001
+printf '[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\nacceleration = 14\nschedule = 0:120:14, 1:130:14\n[run]\ns0 = 0.3\nt_end = 0.2\n' \
+    >"$tmp/scheduled.ini"
+"$bin" run "$tmp/scheduled.ini" --excitation "$record" >"$tmp/o" 2>"$tmp/e"
+check_status "a schedule and --excitation together exit 2" 2 $? "$tmp/e"
+check_has "a schedule and --excitation: message names the schedule" "$tmp/e" \
+    "$tmp/scheduled.ini:6: [excitation] schedule and --excitation both set the excitation"
 
 # ---- bad usage: exit 2 and a message on stderr
 "$bin" run configs/fig6.ini --bogus 1 >"$tmp/o" 2>"$tmp/e"

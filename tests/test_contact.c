@@ -194,7 +194,6 @@ static double uniform(double low, double high) /* LCG, reproducible */
 static void check_detection_against_direct_shapes(const char *path, double deflection)
 {
     static bs_contact_set set;
-    bs_real base[BS_MAX_CONTACTS][BS_ROWS];
     bs_real q[BS_MAX_MODES], phi[BS_MAX_MODES], slope[BS_MAX_MODES];
     bs_shape_cache cache[2];
     double play, worst_w = 0.0, scale_w = 0.0;
@@ -217,14 +216,10 @@ static void check_detection_against_direct_shapes(const char *path, double defle
         frame.x_stops = frame.x_kinematic;
         frame.beta = (bs_real)(i % 3 ? uniform(-0.005, 0.005) : 0.0);
         frame.stops = 1;
-        frame.base.displacement = (bs_real)uniform(-1e-4, 1e-4);
-        frame.base.velocity = (bs_real)uniform(-0.1, 0.1);
-        frame.base.acceleration = 0;
         bs_shape_eval(&scene, frame.x_kinematic, phi, slope);
         for (k = 0; k < scene.n_modes; ++k)
             w += (double)phi[k] * (double)q[k];
-        frame.z = (bs_real)((double)frame.base.displacement + w - (double)scene.com_offset
-                            + uniform(-1.2, 1.2) * play);
+        frame.z = (bs_real)(w - (double)scene.com_offset + uniform(-1.2, 1.2) * play); /* relative to the base */
         for (side = 0; side < 2; ++side) { /* fresh, or expanded up to the reach away */
             const double corner_x = (double)frame.x_kinematic + (side ? 1.0 : -1.0) * 0.5 * file.params.slot_width;
             bs_shape_forget(&cache[side]);
@@ -234,7 +229,7 @@ static void check_detection_against_direct_shapes(const char *path, double defle
         }
         frame.cache = cache;
         frame.reach = bs_shape_reach(&scene);
-        if (bs_contact_detect(&scene, &frame, &set, base) != BS_OK)
+        if (bs_contact_detect(&scene, &frame, &set) != BS_OK)
             continue; /* a corner across the beam's axis: no contacts to compare */
         for (corner = 0; corner < BS_CORNERS; ++corner) {
             const double zeta = corner == 0 || corner == 3 ? 1.0 : -1.0;
@@ -250,11 +245,12 @@ static void check_detection_against_direct_shapes(const char *path, double defle
                 wx += (double)phi[k] * (double)q[k];
                 ws += (double)slope[k] * (double)q[k];
             }
-            test = zeta * (z - (double)frame.base.displacement - wx - zeta * hh) - hh * ws * ws;
+            test = zeta * (z - wx - zeta * hh) - hh * ws * ws;
             for (a = 0; a < set.count; ++a)
                 if (set.id[a] == corner)
                     found = a;
-            if (fabs(test) < 1e-6 * play) { /* within the expansions' error of touching */
+            /* within the expansions' error of touching, or the rounding of the gap's terms */
+            if (fabs(test) < 1e-6 * play + 8.0 * SUPPORT_EPS * (fabs(z) + hh)) {
                 ++borderline;
                 continue;
             }
@@ -263,7 +259,7 @@ static void check_detection_against_direct_shapes(const char *path, double defle
                 const double cos_alpha = 1.0 / sqrt(1.0 + ws * ws), sin_alpha = ws * cos_alpha;
                 const double n_x = -zeta * sin_alpha, n_z = zeta * cos_alpha;
                 const double t_x = -zeta * cos_alpha, t_z = -zeta * sin_alpha;
-                const double d_x = zeta * hh * ws, d_z = z - (double)frame.base.displacement - wx - zeta * hh;
+                const double d_x = zeta * hh * ws, d_z = z - wx - zeta * hh;
                 const double a1 = zeta * hh * (ws * ws - 1.0), a2 = -zeta * hh * ws;
                 const double coef_s = -n_x * a1 - n_z * a2 + (BS_WITH_FRICTION ? t_x * d_x + t_z * d_z : 0.0);
                 ++active;
@@ -275,7 +271,7 @@ static void check_detection_against_direct_shapes(const char *path, double defle
             }
         }
     }
-    print_message("%s, %s: 200000 poses, %ld corners in contact agree, %ld within 1e-6 of the play of "
+    print_message("%s, %s: 200000 poses, %ld corners in contact agree, %ld within rounding or 1e-6 of the play of "
                   "touching; force directions within %.2e of the direct ones (relative)\n",
                   path, BS_REAL_NAME, active, borderline, worst_w / scale_w);
     assert_true(active > 100000);

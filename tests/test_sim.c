@@ -64,10 +64,9 @@ static void test_scene_check_names_the_bad_field(void **state)
     EXPECT_BAD(bad.mass_inv = 0, BS_E_SCENE, "mass_inv");
     EXPECT_BAD(bad.corner[0][1] = bad.corner[1][1], BS_E_SCENE, "corner"); /* slot thinner than the beam */
     EXPECT_BAD(bad.dt = 0, BS_E_SCENE, "dt");
-    /* each finite, but the start height base_displacement - com_offset is not */
-    EXPECT_BAD((bad.base_displacement = (bs_real)(BS_REAL_FLOAT ? (double)FLT_MAX : DBL_MAX),
-                bad.com_offset = -bad.base_displacement), BS_E_SCENE, "com_offset/base_displacement");
-    EXPECT_BAD(bad.dt = BS_R(1e-4), BS_E_UNSTABLE, "dt"); /* omega_5 dt = 2.2 */
+    EXPECT_BAD(bad.base_accel = BS_R(-1.0), BS_E_SCENE, "base_accel");
+    EXPECT_BAD(bad.phase_step_half *= 2, BS_E_SCENE, "frequency/phase_step_half"); /* not f dt / 2 */
+    EXPECT_BAD((bad.dt = BS_R(1e-4), bad.phase_step_half *= 5), BS_E_UNSTABLE, "dt"); /* omega_5 dt = 2.2 */
 #undef EXPECT_BAD
     assert_int_equal(bs_scene_check(&scene, &field), BS_OK);
 }

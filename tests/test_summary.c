@@ -36,9 +36,10 @@ static const char good_scene[] = "[scene]\nbase = mssp2023.ini\n[excitation]\nfr
 
 /* The keys of each summary, in their order. */
 static const char *const run_keys[] = {
-    "scene", "model", "precision", "modes", "dt", "status", "t_end", "steps", "s0", "s_final", "s_min",
-    "t_s_min", "amp_final_h", "amp_periods", "wall_s", "steps_per_s", "max_pgs_iters", "unconverged_steps",
-    "contact_steps", "mean_pgs_iters", "max_systems", "mean_systems", "hash", "version", "revision", NULL };
+    "scene", "model", "precision", "modes", "dt", "excitation", "status", "t_end", "steps", "s0", "s_final",
+    "s_min", "t_s_min", "amp_final_h", "amp_periods", "wall_s", "steps_per_s", "max_pgs_iters",
+    "unconverged_steps", "contact_steps", "mean_pgs_iters", "max_systems", "mean_systems", "hash", "version",
+    "revision", NULL };
 static const char *const sweep_keys[] = {
     "scene", "command", "dir", "precision", "modes", "dt", "status", "from", "to", "step", "hold", "record",
     "points", "steps", "wall_s", "steps_per_s", "max_pgs_iters", "unconverged_steps", "contact_steps",
@@ -148,7 +149,7 @@ static void run_and_summarise(const char *path)
     options.solver = scene_solver(&read_scene.params);
     options.every = 1;
     assert_int_equal(run_scene(&core_scene, &options, &result), 0);
-    capture(summary_print_run(out_, &read_scene.params, &core_scene, &result));
+    capture(summary_print_run(out_, &read_scene.params, &core_scene, NULL, &result));
 }
 
 /* The name comes from the file name: quote, backslash, newline, tab and a
@@ -223,14 +224,14 @@ static void test_run_summary_keeps_the_number_formats(void **state)
     r.solve.max_systems = 8;
     r.solve.systems = 436006;
     r.hash = 0xa75df610u;
-    capture(summary_print_run(out_, &params, &scene, &r));
+    capture(summary_print_run(out_, &params, &scene, NULL, &r));
     snprintf(expected, sizeof expected,
              "{\"scene\":\"fig6\",\"model\":\"free\",\"precision\":\"%s\",\"modes\":5,\"dt\":2e-05,"
-             "\"status\":\"ok\",\"t_end\":60,\"steps\":3000000,\"s0\":0.3,\"s_final\":0.331294145,"
-             "\"s_min\":0.258502209,\"t_s_min\":9.290160,\"amp_final_h\":1.23524,\"amp_periods\":25,"
-             "\"wall_s\":2.359,\"steps_per_s\":1.272e+06,\"max_pgs_iters\":2,\"unconverged_steps\":13,"
-             "\"contact_steps\":2713455,\"mean_pgs_iters\":1.003,\"max_systems\":8,\"mean_systems\":0.1607,"
-             "\"hash\":\"a75df610\",\"version\":\"%s\","
+             "\"excitation\":\"harmonic\",\"status\":\"ok\",\"t_end\":60,\"steps\":3000000,\"s0\":0.3,"
+             "\"s_final\":0.331294145,\"s_min\":0.258502209,\"t_s_min\":9.290160,\"amp_final_h\":1.23524,"
+             "\"amp_periods\":25,\"wall_s\":2.359,\"steps_per_s\":1.272e+06,\"max_pgs_iters\":2,"
+             "\"unconverged_steps\":13,\"contact_steps\":2713455,\"mean_pgs_iters\":1.003,\"max_systems\":8,"
+             "\"mean_systems\":0.1607,\"hash\":\"a75df610\",\"version\":\"%s\","
              "\"revision\":\"%s\"}\n", BS_REAL_NAME, BS_VERSION_STRING, BS_REVISION);
     assert_string_equal(line, expected);
     root = parse_summary(run_keys);
@@ -255,7 +256,7 @@ static void test_non_finite_numbers_are_null(void **state)
     r.s_final = (double)NAN;
     r.amp_final_h = HUGE_VAL;
     r.t_s_min = 1e300; /* %.6f: 301 digits, still a number */
-    capture(summary_print_run(out_, &params, &scene, &r));
+    capture(summary_print_run(out_, &params, &scene, NULL, &r));
     root = parse_summary(run_keys);
     assert_true(cJSON_IsNull(cJSON_GetObjectItemCaseSensitive(root, "s_final")));
     assert_true(cJSON_IsNull(cJSON_GetObjectItemCaseSensitive(root, "amp_final_h")));

@@ -38,9 +38,9 @@ extern "C" {
 /* Version (docs/CHANGELOG.md). Until 1.0, a minor release may change the API
  * and the layout of bs_sim; BS_BUILD_TAG carries major and minor. */
 #define BS_VERSION_MAJOR 0
-#define BS_VERSION_MINOR 6
+#define BS_VERSION_MINOR 7
 #define BS_VERSION_PATCH 0
-#define BS_VERSION_STRING "0.6.0"
+#define BS_VERSION_STRING "0.7.0"
 #define BS_VERSION_NUMBER (BS_VERSION_MAJOR * 10000 + BS_VERSION_MINOR * 100 + BS_VERSION_PATCH)
 
 /* The build configuration as this translation unit sees it: version,
@@ -49,13 +49,14 @@ extern "C" {
  * program compiled against another build than the library it links is
  * refused with BS_E_BUILD instead of corrupting memory. */
 #ifdef BS_SCENE_MODES
-#define BS_BUILD_SCENE_MODES ((uint32_t)(BS_SCENE_MODES) & 63u)
+#define BS_BUILD_SCENE_MODES ((uint32_t)(BS_SCENE_MODES) & 31u)
 #else
 #define BS_BUILD_SCENE_MODES 0u
 #endif
 #define BS_BUILD_TAG                                                                          \
     (((uint32_t)BS_VERSION_MAJOR << 24) | ((uint32_t)BS_VERSION_MINOR << 16)                  \
-     | (BS_BUILD_SCENE_MODES << 10) | ((uint32_t)BS_WITH_SUBSPACE << 9)                       \
+     | ((uint32_t)BS_WITH_PIEZO << 15) | (BS_BUILD_SCENE_MODES << 10)                         \
+     | ((uint32_t)BS_WITH_SUBSPACE << 9)                                                        \
      | ((uint32_t)BS_WITH_IMPLICIT << 8) | ((uint32_t)BS_WITH_PCS << 7)                       \
      | ((uint32_t)BS_WITH_STRETCHING << 6) | ((uint32_t)BS_WITH_ROTATION << 5)                \
      | ((uint32_t)BS_WITH_GRAVITY << 4) | ((uint32_t)BS_WITH_RESTITUTION << 3)                \
@@ -106,11 +107,41 @@ bs_status bs_sim_get_solver(const bs_sim *sim, bs_solver_options *options);
  * BS_E_UNINITIALISED or BS_E_ARGUMENT. */
 bs_status bs_sim_set_pcs_position(bs_sim *sim, bs_real s);
 
-/* Advances one time step dt. On error the state stays at the last good step.
- * Returns BS_OK, BS_E_NULL, BS_E_UNINITIALISED, BS_E_UNSTABLE,
+/* Advances one time step dt under the harmonic excitation (the scene's, or
+ * the last bs_sim_set_excitation's). On error the state stays at the last
+ * good step. Returns BS_OK, BS_E_NULL, BS_E_UNINITIALISED, BS_E_UNSTABLE,
  * BS_E_NONFINITE or BS_E_ESCAPED. Hitting the sweep cap is not an error: see
  * bs_sim_get_report(). */
 bs_status bs_sim_step(bs_sim *sim);
+
+/* Advances one time step dt under a measured excitation: base_accel is the
+ * mean base acceleration over the step [m/s^2], (dw0/dt(t_E) - dw0/dt(t_B)) /
+ * dt, what an anti-aliased accelerometer sampled once per step delivers
+ * (align its latency with the twin's other signals: docs/twin.md). Heights
+ * are relative to the base, so nothing integrates it. Returns what
+ * bs_sim_step returns, or BS_E_ARGUMENT (nothing changes) for a base_accel
+ * that is not finite. */
+bs_status bs_sim_step_measured(bs_sim *sim, bs_real base_accel);
+
+/* The harmonic excitation d2w0/dt2 = -a cos(2 pi f t) from the next step on:
+ * frequency f [Hz] with f dt in (0, 1/2), amplitude a [m/s^2] >= 0. The phase
+ * continues where it is (a frequency ramp or step has no jump). Returns
+ * BS_OK, BS_E_NULL, BS_E_UNINITIALISED or BS_E_ARGUMENT (nothing changes). */
+bs_status bs_sim_set_excitation(bs_sim *sim, bs_real frequency, bs_real amplitude);
+
+/* The harmonic excitation's frequency [Hz] and amplitude [m/s^2]; either
+ * pointer may be NULL. Returns BS_OK, BS_E_NULL or BS_E_UNINITIALISED. */
+bs_status bs_sim_get_excitation(const bs_sim *sim, bs_real *frequency, bs_real *amplitude);
+
+/* The mean base acceleration the last step used [m/s^2] (0 before the first
+ * step; NaN for a NULL or uninitialised sim). */
+bs_real bs_sim_base_acceleration(const bs_sim *sim);
+
+/* What the piezoelectric transducer does (docs/model.md 11): the patch and
+ * storage voltages, the power into the load over the last step and the
+ * energy since bs_sim_init; out->present = 0 and zeros for a scene without
+ * one. Returns BS_OK, BS_E_NULL or BS_E_UNINITIALISED. */
+bs_status bs_sim_get_transducer(const bs_sim *sim, bs_transducer_output *out);
 
 /* Copies the contact report of the last step into *report. Returns BS_OK,
  * BS_E_NULL or BS_E_UNINITIALISED. */
@@ -129,7 +160,8 @@ bs_real bs_sim_position(const bs_sim *sim);
 bs_status bs_sim_beam_at(const bs_sim *sim, bs_real x, bs_real *w, bs_real *w_slope);
 
 /* Copies the state out: modal coordinates q_k and velocities (n_modes values
- * each), slider (x_C [m], z_C [m], beta [rad]) and its velocities. Any array
+ * each), slider (x_C [m], z_r [m]: the height z_C - w0 relative to the base,
+ * beta [rad]) and its velocities (relative to the base). Any array
  * may be NULL to skip that part. Returns BS_OK, BS_E_NULL or
  * BS_E_UNINITIALISED. */
 bs_status bs_sim_get_state(const bs_sim *sim, bs_real *q_beam, bs_real *u_beam, bs_real *slider,
@@ -155,6 +187,40 @@ uint64_t bs_sim_steps(const bs_sim *sim);
 /* FNV-1a hash of the complete dynamic state (bit patterns), for determinism
  * checks. 0 for a NULL or uninitialised sim. */
 uint32_t bs_sim_hash(const bs_sim *sim);
+
+/* FNV-1a hash of a scene's values (every used element of every field, in
+ * bs_scene_fields.h's order): the identity checkpoints carry. 0 for NULL. */
+uint32_t bs_scene_hash(const bs_scene *scene);
+
+/* Checkpoints: the complete state of a sim (step count, excitation phase and
+ * settings, compensated parts, warm start, mode-shape caches, transducer) as
+ * BS_CHECKPOINT_SIZE bytes in the caller's buffer, e.g. for flash, a file or
+ * a twin that rewinds. The bytes carry a format mark, this build's tag
+ * (version, precision, switches, modes), the scene's hash (bs_scene_hash)
+ * and a checksum; they are in the machine's byte order (another byte order is
+ * refused, not converted). A sim restored from a checkpoint continues bit for
+ * bit as the sim saved would have. The solver options are the caller's
+ * setting, not state: they are neither saved nor restored. Layout:
+ * docs/twin.md. */
+#define BS_CHECKPOINT_REALS                                                                   \
+    (5 + 2 * BS_MAX_MODES + 6 + 1 + BS_ROWS * BS_MAX_CONTACTS + 1                           \
+     + 2 * (1 + BS_MAX_MODES * BS_SHAPE_TERMS) + 5 * BS_WITH_PIEZO)
+#define BS_CHECKPOINT_SIZE ((size_t)(6 * 4 + 5 * 4 + 3 * 8 + 4) + (size_t)BS_CHECKPOINT_REALS * sizeof(bs_real))
+
+/* Writes sim's checkpoint into buffer[0 .. BS_CHECKPOINT_SIZE). Returns BS_OK,
+ * BS_E_NULL, BS_E_UNINITIALISED or BS_E_CHECKPOINT_SIZE (size too small;
+ * nothing written). */
+bs_status bs_sim_save(const bs_sim *sim, void *buffer, size_t size);
+
+/* Overwrites an initialised sim's state with a checkpoint (the sim must have
+ * been initialised with the same scene: its hash must match). Every check
+ * comes before any change: on error nothing changes. Returns BS_OK,
+ * BS_E_NULL, BS_E_UNINITIALISED, BS_E_CHECKPOINT_SIZE (size below
+ * BS_CHECKPOINT_SIZE, or the checkpoint records another size),
+ * BS_E_CHECKPOINT_DAMAGED, BS_E_CHECKPOINT_BUILD or BS_E_CHECKPOINT_SCENE
+ * (another scene, or a model or state this sim refuses: a value not finite,
+ * x_C outside the band bs_sim_set_state accepts). */
+bs_status bs_sim_restore(bs_sim *sim, const void *buffer, size_t size);
 
 /* Short English text of a status, for messages ("unknown status" for a value
  * that is none). */

@@ -63,6 +63,9 @@
 #ifndef BS_WITH_IMPLICIT        /* the linearly implicit theta variant of the step */
 #define BS_WITH_IMPLICIT 1
 #endif
+#ifndef BS_WITH_PIEZO           /* the piezoelectric transducer and its load (docs/model.md 11) */
+#define BS_WITH_PIEZO 1
+#endif
 #ifndef BS_WITH_SUBSPACE        /* the active-set solve of three or more contacts (core/src/bs_pgs.c); */
 #define BS_WITH_SUBSPACE 1      /* 0: plain sweeps for those (one and two contacts stay exact) */
 #endif

@@ -53,10 +53,23 @@
     /* Contact laws */                                                                                \
     X(REAL, mu, ONE, ONE, ONE, NONNEGATIVE, "", "Coulomb friction coefficient")                       \
     X(REAL, e_n, ONE, ONE, ONE, UNIT, "", "Newton normal restitution")                                \
-    /* Base excitation w0 = (a / Omega^2) cos(Omega t) */                                            \
-    X(REAL, base_accel, ONE, ONE, ONE, FINITE, "m/s^2", "a, amplitude of the base acceleration")      \
-    X(REAL, base_velocity, ONE, ONE, ONE, FINITE, "m/s", "a / Omega")                                 \
-    X(REAL, base_displacement, ONE, ONE, ONE, FINITE, "m", "a / Omega^2")                             \
+    /* Piezoelectric transducer and its load (docs/model.md 11); load 0: none, the rest unused */     \
+    X(INT, load, ONE, ONE, ONE, CROSS, "", "BS_LOAD_NONE, BS_LOAD_RESISTOR (R_l) or BS_LOAD_RECTIFIER (a full bridge into C_s || R_s)") \
+    X(REAL, piezo_theta, MODES, ONE, ONE, FINITE, "N/(V sqrt(kg))",                                   \
+      "theta_k = Theta (phi_k'(x_2) - phi_k'(x_1)), the patch's modal coupling")                      \
+    X(REAL, piezo_capacitance_inv, ONE, ONE, ONE, CROSS, "1/F", "1 / C_p, the patch's inverse capacitance") \
+    X(REAL, load_decay, ONE, ONE, ONE, UNIT, "",                                                      \
+      "over half a step: exp(-dt / (2 R_l C_p)) of the patch voltage (resistor), exp(-dt / (2 R_s C_s)) of the storage's (rectifier)") \
+    X(REAL, load_gain, ONE, ONE, ONE, NONNEGATIVE, "Ohm",                                             \
+      "R_l (1 - load_decay): volts over half a step per ampere of patch current (resistor)")           \
+    X(REAL, load_conductance, ONE, ONE, ONE, NONNEGATIVE, "1/Ohm",                                    \
+      "1 / R_l (resistor) or 1 / R_s (rectifier): the load's power is this times its voltage squared") \
+    X(REAL, storage_capacitance_inv, ONE, ONE, ONE, NONNEGATIVE, "1/F", "1 / C_s (rectifier)")       \
+    X(REAL, bridge_drop, ONE, ONE, ONE, NONNEGATIVE, "V", "2 V_f, the two conducting diodes' drop (rectifier)") \
+    /* Harmonic base excitation d2w0/dt2 = -a cos(Omega t), the start of a run's */                 \
+    /* (bs_sim_set_excitation changes it, bs_sim_step_measured replaces it) */                        \
+    X(REAL, base_accel, ONE, ONE, ONE, NONNEGATIVE, "m/s^2", "a, amplitude of the base acceleration") \
+    X(REAL, frequency, ONE, ONE, ONE, POSITIVE, "Hz", "f_ex, the excitation frequency")                \
     X(U64, phase_step_half, ONE, ONE, ONE, CROSS, "turns 2^-64",                                      \
       "f_ex dt / 2 in units of 2^-64 turns: the exact phase advances by twice this per step")         \
     /* Time step */                                                                                   \

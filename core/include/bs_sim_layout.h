@@ -54,6 +54,10 @@ typedef struct bs_sim {
     bs_real x_pcs;                     /* PCS: prescribed x_C for the kinematics [m] */
     uint64_t step;                     /* steps taken */
     uint64_t phase;                    /* excitation phase, turns * 2^64 (wraps each period) */
+    uint64_t phase_step_half;          /* f dt / 2 in 2^-64 turns (bs_sim_set_excitation) */
+    bs_real excitation[2];             /* frequency [Hz] and amplitude a [m/s^2] as set */
+    bs_real step_accel;                /* a sinc(Omega dt / 2): amplitude of the step mean [m/s^2] */
+    bs_real base_accel;                /* mean base acceleration the last step used [m/s^2] */
     bs_real q_beam[BS_MAX_MODES];      /* modal coordinates q_k */
     bs_real u_beam[BS_MAX_MODES];      /* modal velocities */
     bs_real slider[3];                 /* x_C, z_C [m], beta [rad] */
@@ -65,6 +69,13 @@ typedef struct bs_sim {
     bs_shape_cache side[2];            /* mode shapes about the left (P1, P2) and right (P4, P3) corners */
     bs_real shape_reach;               /* how far they serve (core/src/bs_shape.c) */
     bs_real stretch_rows[BS_MAX_MODES]; /* sum_j |S_ij|, for the stability bound (core/src/bs_beam.c) */
+#if BS_WITH_PIEZO
+    bs_real voltage;                   /* v across the patch [V] */
+    bs_real storage_voltage;           /* V_s (rectifier) [V] */
+    bs_real power;                     /* into the load over the last step [W] */
+    bs_real energy, energy_low;        /* into the load since init [J], a compensated sum */
+    bs_real piezo_stiffness;           /* max_k |theta_k| sum_j |theta_j| / C_p (stability bound) */
+#endif
 } bs_sim;
 
 #endif

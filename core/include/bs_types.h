@@ -21,7 +21,12 @@ typedef enum bs_status {
                                 past a clamp stop (the contacts did not hold; docs/design.md 5) */
     BS_E_BUILD = -7,         /* the program was compiled against another build of beamslider
                                 (precision, sizes, switches or version) than the library it links */
-    BS_E_UNINITIALISED = -8  /* the bs_sim was never initialised, or its last bs_sim_init failed */
+    BS_E_UNINITIALISED = -8, /* the bs_sim was never initialised, or its last bs_sim_init failed */
+    BS_E_CHECKPOINT_SIZE = -9,    /* a checkpoint buffer smaller than BS_CHECKPOINT_SIZE, or a
+                                     checkpoint of another size */
+    BS_E_CHECKPOINT_DAMAGED = -10, /* not a checkpoint, another byte order, or its checksum fails */
+    BS_E_CHECKPOINT_BUILD = -11,  /* a checkpoint of another version or build (precision, switches, modes) */
+    BS_E_CHECKPOINT_SCENE = -12   /* a checkpoint of another scene, or of a state this sim cannot take */
 } bs_status;
 
 /* Model variants (docs/model.md 6). */
@@ -29,6 +34,22 @@ typedef enum bs_model {
     BS_MODEL_FREE = 0,       /* free slider */
     BS_MODEL_PCS = 1         /* pseudo-constrained slider: contact kinematics at a prescribed x */
 } bs_model;
+
+/* The load of the piezoelectric transducer (bs_scene.load; docs/model.md 11). */
+typedef enum bs_load {
+    BS_LOAD_NONE = 0,        /* no transducer */
+    BS_LOAD_RESISTOR = 1,    /* a resistor R_l across the patch */
+    BS_LOAD_RECTIFIER = 2    /* a full-bridge rectifier charging C_s, with R_s across it */
+} bs_load;
+
+/* What the transducer does (bs_sim_get_transducer). */
+typedef struct bs_transducer_output {
+    int present;             /* 1 if the scene has a transducer (load != BS_LOAD_NONE), else all 0 */
+    bs_real voltage;         /* v across the patch at the end of the last step [V] */
+    bs_real storage_voltage; /* V_s across the storage capacitor [V] (rectifier; else 0) */
+    bs_real power;           /* into the load over the last step [W]: v^2 / R_l or V_s^2 / R_s */
+    bs_real energy;          /* into the load since bs_sim_init [J] */
+} bs_transducer_output;
 
 /* Settings of the contact solve (docs/design.md 6). They trade accuracy for
  * time and can change between steps (bs_sim_set_solver); the time step is

@@ -3,12 +3,12 @@
  * Slot corner i (P1..P4, counter-clockwise from top left), zeta_i = +1 for the
  * top corners P1, P4 (they touch the beam's top surface), -1 for P2, P3:
  *
- *   r_P   = (x_C, z_C) + A(beta) rho_i,   rho_i = r_CP,i (scene->corner)
+ *   r_P   = (x_C, z_r) + A(beta) rho_i,   rho_i = r_CP,i (scene->corner)
  *   A rho = ( cos b rho_x + sin b rho_z, -sin b rho_x + cos b rho_z )
  *   w, w' = sum phi_k q_k, sum phi_k' q_k at x_P;   alpha = atan w'
- *   r_B   = (x_P, w0 + w) + zeta h/2 (-w', 1)
+ *   r_B   = (x_P, w) + zeta h/2 (-w', 1)
  *   n     = zeta (-sin alpha, cos alpha),   t = zeta (-cos alpha, -sin alpha)
- *   d     = r_P - r_B = ( zeta h/2 w',  z_P - w0 - w - zeta h/2 )
+ *   d     = r_P - r_B = ( zeta h/2 w',  z_P - w - zeta h/2 )
  *   g_N   = n.d = cos(alpha) (zeta d_z - h/2 w'^2),   g_T = t.d
  *   (active when g_N < 0; the sign needs no square root)
  *
@@ -20,7 +20,9 @@
  *   so with a1 = zeta h/2 (w'^2 - 1), a2 = -zeta h/2 w':
  *           W_N,k = -n_z phi_k + (-n_x a1 - n_z a2 + g_T) phi_k'
  *           W_T,k = -t_z phi_k + (-t_x a1 - t_z a2 - g_N) phi_k'
- *   base:   w~ = -C (0, dw0/dt)
+ * Heights are relative to the base (z_r = z_C - w0, docs/model.md 10): the
+ * base's motion enters the slider's equation as an inertial force instead,
+ * and the contact velocity has no base term (w~ = 0).
  * Without friction only the normal row exists; with the rotation locked the
  * beta column does not.
  *
@@ -116,8 +118,7 @@ static void beam_under_side(const bs_scene *scene, const bs_real *q, bs_real rea
  * than h/2 into the beam, which no step of a held contact reaches; the slider
  * has left the beam), else 0. */
 static int add_corner(const bs_scene *scene, const bs_contact_frame *frame, int corner,
-                      const corner_point *p, bs_contact_set *set,
-                      bs_real base_term[BS_MAX_CONTACTS][BS_ROWS])
+                      const corner_point *p, bs_contact_set *set)
 {
     const int n = BS_NMODES(scene);
     const bs_real zeta = corner_zeta(corner);
@@ -129,7 +130,7 @@ static int add_corner(const bs_scene *scene, const bs_contact_frame *frame, int 
     int k;
 
     d_x = zeta * hh * w_slope;
-    d_z = p->z - frame->base.displacement - p->w - zeta * hh;
+    d_z = p->z - p->w - zeta * hh;
     if (!(zeta * d_z - hh * w_slope * w_slope < BS_R(0.0)))
         return 0;
     if (zeta * d_z + hh < BS_R(0.0))
@@ -152,7 +153,6 @@ static int add_corner(const bs_scene *scene, const bs_contact_frame *frame, int 
 #if BS_WITH_ROTATION
     set->dir_slider[BS_ROWS * a][2] = n_x * p->arm_z - n_z * p->arm_x;
 #endif
-    base_term[a][0] = -n_z * frame->base.velocity;
 #if BS_WITH_FRICTION
     {
         const bs_real t_x = -zeta * cos_alpha;
@@ -169,7 +169,6 @@ static int add_corner(const bs_scene *scene, const bs_contact_frame *frame, int 
 #if BS_WITH_ROTATION
         set->dir_slider[BS_ROWS * a + 1][2] = t_x * p->arm_z - t_z * p->arm_x;
 #endif
-        base_term[a][1] = -t_z * frame->base.velocity;
     }
 #else
     (void)gap_n; /* the tangential row is what needs it */
@@ -179,8 +178,7 @@ static int add_corner(const bs_scene *scene, const bs_contact_frame *frame, int 
     return 0;
 }
 
-static void add_stop(const bs_scene *scene, int id, bs_real sign, bs_contact_set *set,
-                     bs_real base_term[BS_MAX_CONTACTS][BS_ROWS])
+static void add_stop(const bs_scene *scene, int id, bs_real sign, bs_contact_set *set)
 {
     const int a = set->count++;
     int r, k;
@@ -194,7 +192,6 @@ static void add_stop(const bs_scene *scene, int id, bs_real sign, bs_contact_set
             set->dir_beam[BS_ROWS * a + r][k] = BS_R(0.0);
         for (k = 0; k < BS_SLIDER_DOF; ++k)
             set->dir_slider[BS_ROWS * a + r][k] = BS_R(0.0);
-        base_term[a][r] = BS_R(0.0);
     }
     set->dir_slider[BS_ROWS * a][0] = sign;
 }
@@ -220,8 +217,7 @@ static void rotation(bs_real beta, bs_real *cos_beta, bs_real *sin_beta)
 }
 #endif
 
-bs_status bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
-                            bs_contact_set *set, bs_real base_term[BS_MAX_CONTACTS][BS_ROWS])
+bs_status bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame, bs_contact_set *set)
 {
     bs_real cos_beta = BS_R(1.0), sin_beta = BS_R(0.0);
     corner_point at[BS_CORNERS];
@@ -236,27 +232,25 @@ bs_status bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame
     beam_under_side(scene, frame->q_beam, frame->reach, &frame->cache[0], &at[0], &at[1]); /* P1, P2 */
     beam_under_side(scene, frame->q_beam, frame->reach, &frame->cache[1], &at[3], &at[2]); /* P4, P3 */
     for (corner = 0; corner < BS_CORNERS; ++corner)
-        if (add_corner(scene, frame, corner, &at[corner], set, base_term))
+        if (add_corner(scene, frame, corner, &at[corner], set))
             return BS_E_ESCAPED;
     if (frame->stops) {
         if (frame->x_stops < scene->stop_min)
-            add_stop(scene, BS_STOP_LEFT, BS_R(1.0), set, base_term);
+            add_stop(scene, BS_STOP_LEFT, BS_R(1.0), set);
         if (frame->x_stops > scene->stop_max)
-            add_stop(scene, BS_STOP_RIGHT, BS_R(-1.0), set, base_term);
+            add_stop(scene, BS_STOP_RIGHT, BS_R(-1.0), set);
     }
     return BS_OK;
 }
 
-/* W_r^T u + w~_r of active contact a, row r. */
+/* W_r^T u of active contact a, row r. */
 static bs_real row_velocity(const bs_scene *scene, const bs_contact_set *set, int a, int r,
-                            const bs_real *u_beam, const bs_real *u_slider,
-                            const bs_real base_term[BS_MAX_CONTACTS][BS_ROWS])
+                            const bs_real *u_beam, const bs_real *u_slider)
 {
     const bs_real *beam = set->dir_beam[BS_ROWS * a + r];
     const bs_real *slider = set->dir_slider[BS_ROWS * a + r];
-    bs_real v = base_term[a][r];
+    bs_real v = slider[0] * u_slider[0];
     int k;
-    v += slider[0] * u_slider[0];
     v += slider[1] * u_slider[1];
 #if BS_WITH_ROTATION
     v += slider[2] * u_slider[2];
@@ -268,8 +262,7 @@ static bs_real row_velocity(const bs_scene *scene, const bs_contact_set *set, in
 
 void bs_contact_free_velocity(const bs_scene *scene, bs_contact_set *set,
                               const bs_real *u_beam, const bs_real *u_slider,
-                              const bs_real *u_beam_before, const bs_real *u_slider_before,
-                              const bs_real base_term[BS_MAX_CONTACTS][BS_ROWS])
+                              const bs_real *u_beam_before, const bs_real *u_slider_before)
 {
     int a, r;
 
@@ -279,10 +272,10 @@ void bs_contact_free_velocity(const bs_scene *scene, bs_contact_set *set,
 #endif
     for (a = 0; a < set->count; ++a)
         for (r = 0; r < BS_ROWS; ++r) {
-            bs_real v = row_velocity(scene, set, a, r, u_beam, u_slider, base_term);
+            bs_real v = row_velocity(scene, set, a, r, u_beam, u_slider);
 #if BS_WITH_RESTITUTION
             if (r == 0)
-                v += scene->e_n * row_velocity(scene, set, a, 0, u_beam_before, u_slider_before, base_term);
+                v += scene->e_n * row_velocity(scene, set, a, 0, u_beam_before, u_slider_before);
 #endif
             set->free_velocity[BS_ROWS * a + r] = v;
         }

@@ -3,7 +3,6 @@
 #define BS_CONTACT_H
 
 #include "bs_sim_layout.h"
-#include "bs_excitation.h"
 
 /* Relative compliance added to the diagonal of G, normal and tangential rows
  * (bs_contact.c; docs/design.md 6 has the measurements behind the values). */
@@ -15,29 +14,27 @@ typedef struct bs_contact_frame {
     const bs_real *q_beam;  /* modal coordinates */
     bs_real x_kinematic;    /* x_C used for the contact points (x_pcs in the PCS model) [m] */
     bs_real x_stops;        /* x_C checked against the clamp end stops [m] */
-    bs_real z;              /* z_C [m] */
+    bs_real z;              /* z_r = z_C - w0, the slot's height relative to the base [m] */
     bs_real beta;           /* [rad] */
     int stops;              /* 1: clamp end stops take part */
-    bs_base base;           /* base motion */
     bs_shape_cache *cache;  /* the mode shapes about the left and right corners (2; updated) */
     bs_real reach;          /* of the expansions (bs_shape_reach) */
 } bs_contact_frame;
 
 /* Finds the contacts with g_N < 0 and fills set->count, id, mu (with
- * friction) and the force directions W; base_term[a] receives w~ = dg/dt of
- * active contact a. Returns BS_OK, or BS_E_ESCAPED when a slot corner is on
- * the wrong side of the beam's axis (the slider has left the beam). */
-bs_status bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame,
-                       bs_contact_set *set, bs_real base_term[BS_MAX_CONTACTS][BS_ROWS]);
+ * friction) and the force directions W. Returns BS_OK, or BS_E_ESCAPED when a
+ * slot corner is on the wrong side of the beam's axis (the slider has left
+ * the beam). */
+bs_status bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame, bs_contact_set *set);
 
 /* The free velocity c of the contact problem, set->free_velocity: per active
- * contact the relative velocity gamma = W^T u + w~ at the free velocities u
- * (u_slider: x_C, z_C, beta velocities), plus on the normal row e_N times
- * gamma_N at the velocities before the step (Newton's impact law). */
+ * contact the relative velocity gamma = W^T u at the free velocities u
+ * (u_slider: x_C, z_r, beta velocities, in the base's frame: no base term),
+ * plus on the normal row e_N times gamma_N at the velocities before the step
+ * (Newton's impact law). */
 void bs_contact_free_velocity(const bs_scene *scene, bs_contact_set *set,
                               const bs_real *u_beam, const bs_real *u_slider,
-                              const bs_real *u_beam_before, const bs_real *u_slider_before,
-                              const bs_real base_term[BS_MAX_CONTACTS][BS_ROWS]);
+                              const bs_real *u_beam_before, const bs_real *u_slider_before);
 
 /* Delassus operator G = W^T M^-1 W of the active contacts. */
 void bs_contact_delassus(const bs_scene *scene, bs_contact_set *set);

@@ -9,6 +9,7 @@
  * are checked by hand below. The first failure names its field.
  */
 #include "beamslider.h"
+#include "bs_piezo.h"
 #include "bs_sim_internal.h"
 
 /* NaN and infinity give x - x != 0; no libm needed. */
@@ -110,13 +111,17 @@ static int check_cross(const bs_scene *s, const char **field)
         return fail(field, "corner");
     if (!(s->stop_min >= BS_R(0.0) && s->stop_min < s->stop_max && s->stop_max <= s->length))
         return fail(field, "stop_min/stop_max");
-    /* bs_sim_init starts the slider at z_C = base_displacement - com_offset:
-     * each finite is not enough, their sum must be too */
-    if (!is_finite(s->base_displacement - s->com_offset))
-        return fail(field, "com_offset/base_displacement");
-    /* at least two steps per excitation period: f_ex dt < 1/2 */
+    /* at least two steps per excitation period: f_ex dt < 1/2; and the phase
+     * step is f_ex dt / 2 (to the rounding of frequency and dt) */
     if (s->phase_step_half == 0 || s->phase_step_half >= ((uint64_t)1 << 62))
         return fail(field, "phase_step_half");
+    {
+        /* in 2^-64 turns: the step is an integer, rounded from f_ex dt / 2 */
+        const double want = 0.5 * (double)s->frequency * (double)s->dt * 18446744073709551616.0;
+        const double slack = 1.0 + 8.0 * (double)BS_REAL_EPS * want;
+        if (!((double)s->phase_step_half - want <= slack && want - (double)s->phase_step_half <= slack))
+            return fail(field, "frequency/phase_step_half");
+    }
     if (s->implicit != 0 && s->implicit != 1)
         return fail(field, "implicit");
     if (!(s->theta >= BS_R(0.5) && s->theta <= BS_R(1.0)) || (!s->implicit && s->theta != BS_R(0.5)))
@@ -125,6 +130,12 @@ static int check_cross(const bs_scene *s, const char **field)
         if (!(s->mode_gain[i] > BS_R(0.0) && s->mode_gain[i] <= BS_R(1.0))
             || (!s->implicit && s->mode_gain[i] != BS_R(1.0)))
             return fail(field, "mode_gain");
+    if (s->load != BS_LOAD_NONE && s->load != BS_LOAD_RESISTOR && s->load != BS_LOAD_RECTIFIER)
+        return fail(field, "load");
+    if (s->load != BS_LOAD_NONE && !(s->piezo_capacitance_inv > BS_R(0.0) && is_finite(s->piezo_capacitance_inv)))
+        return fail(field, "piezo_capacitance_inv");
+    if (s->load == BS_LOAD_RECTIFIER && !(s->storage_capacitance_inv > BS_R(0.0)))
+        return fail(field, "storage_capacitance_inv");
     return 0;
 }
 
@@ -144,6 +155,8 @@ static int check_compiled_features(const bs_scene *s, const char **field)
         return fail(field, "gravity");
     if (!BS_WITH_ROTATION && s->inertia_inv != BS_R(0.0))
         return fail(field, "inertia_inv");
+    if (!BS_WITH_PIEZO && s->load != BS_LOAD_NONE)
+        return fail(field, "load");
     if (!BS_WITH_STRETCHING) {
         int i, j;
         for (i = 0; i < s->n_modes; ++i)
@@ -160,6 +173,7 @@ static int check_compiled_features(const bs_scene *s, const char **field)
 
 bs_status bs_scene_check_(uint32_t tag, size_t scene_size, const bs_scene *scene, const char **field)
 {
+    bs_real piezo = BS_R(0.0);
     int i;
 
     if (!scene)
@@ -169,11 +183,17 @@ bs_status bs_scene_check_(uint32_t tag, size_t scene_size, const bs_scene *scene
     if (check_counts(scene, field) || check_fields(scene, field) || check_cross(scene, field)
         || check_compiled_features(scene, field))
         return BS_E_SCENE;
-    /* explicit stability limit of the smooth part: omega_max dt < 2 */
-    for (i = 0; i < scene->n_modes && !scene->implicit; ++i)
-        if (!(scene->omega_sq[i] * scene->dt * scene->dt < BS_R(4.0))) {
-            fail(field, "dt");
+#if BS_WITH_PIEZO
+    piezo = bs_piezo_stiffness(scene);
+#endif
+    /* explicit stability limit of the smooth part: omega_max dt < 2, the
+     * open patch's stiffness added to it as the step does (docs/design.md 10) */
+    for (i = 0; i < scene->n_modes; ++i) {
+        const bs_real beam = scene->implicit ? BS_R(0.0) : scene->omega_sq[i];
+        if (!((beam + piezo) * scene->dt * scene->dt < BS_R(4.0))) {
+            fail(field, piezo > BS_R(0.0) ? "piezo_theta" : "dt");
             return BS_E_UNSTABLE;
         }
+    }
     return BS_OK;
 }

@@ -7,7 +7,9 @@
  */
 #include "beamslider.h"
 #include "bs_beam.h"
+#include "bs_excitation.h"
 #include "bs_port.h"
+#include "bs_piezo.h"
 #include "bs_shape.h"
 #include "bs_sim_internal.h"
 
@@ -65,13 +67,18 @@ bs_status bs_sim_init_(uint32_t tag, size_t sim_size, size_t scene_size, bs_sim 
     sim->x_pcs = s0 * scene->length;
     sim->step = 0;
     sim->phase = 0;
+    sim->phase_step_half = scene->phase_step_half;
+    sim->excitation[0] = scene->frequency;
+    sim->excitation[1] = scene->base_accel;
+    sim->step_accel = (bs_real)((double)scene->base_accel * bs_excitation_step_factor(scene->phase_step_half));
+    sim->base_accel = BS_R(0.0);
     for (i = 0; i < BS_MAX_MODES; ++i) {
         sim->q_beam[i] = BS_R(0.0);
         sim->u_beam[i] = BS_R(0.0);
     }
-    /* slot centred on the beam axis, which sits at w0(0) */
+    /* slot centred on the beam axis (heights relative to the base) */
     sim->slider[0] = s0 * scene->length;
-    sim->slider[1] = -scene->com_offset + scene->base_displacement;
+    sim->slider[1] = -scene->com_offset;
     sim->slider[2] = BS_R(0.0);
     for (i = 0; i < 3; ++i)
         sim->slider_velocity[i] = BS_R(0.0);
@@ -87,6 +94,11 @@ bs_status bs_sim_init_(uint32_t tag, size_t sim_size, size_t scene_size, bs_sim 
     bs_shape_forget(&sim->side[1]);
     sim->shape_reach = bs_shape_reach(scene);
     bs_beam_stretch_rows(scene, sim->stretch_rows);
+#if BS_WITH_PIEZO
+    sim->voltage = sim->storage_voltage = sim->power = BS_R(0.0);
+    sim->energy = sim->energy_low = BS_R(0.0);
+    sim->piezo_stiffness = bs_piezo_stiffness(scene);
+#endif
     sim->ready = BS_SIM_READY;
     return BS_OK;
 }
@@ -113,6 +125,60 @@ bs_status bs_sim_get_solver(const bs_sim *sim, bs_solver_options *options)
         return BS_E_NULL;
     *options = sim->solver;
     return BS_OK;
+}
+
+bs_status bs_sim_set_excitation(bs_sim *sim, bs_real frequency, bs_real amplitude)
+{
+    const bs_status status = bs_sim_status(sim);
+    uint64_t half;
+    if (status != BS_OK)
+        return status;
+    half = bs_excitation_phase_step_half((double)frequency, (double)sim->scene->dt);
+    if (half == 0 || !(amplitude >= BS_R(0.0)) || amplitude - amplitude != BS_R(0.0))
+        return BS_E_ARGUMENT;
+    sim->phase_step_half = half;
+    sim->excitation[0] = frequency;
+    sim->excitation[1] = amplitude;
+    sim->step_accel = (bs_real)((double)amplitude * bs_excitation_step_factor(half));
+    return BS_OK;
+}
+
+bs_status bs_sim_get_excitation(const bs_sim *sim, bs_real *frequency, bs_real *amplitude)
+{
+    const bs_status status = bs_sim_status(sim);
+    if (status != BS_OK)
+        return status;
+    if (frequency)
+        *frequency = sim->excitation[0];
+    if (amplitude)
+        *amplitude = sim->excitation[1];
+    return BS_OK;
+}
+
+bs_status bs_sim_get_transducer(const bs_sim *sim, bs_transducer_output *out)
+{
+    const bs_status status = bs_sim_status(sim);
+    if (status != BS_OK)
+        return status;
+    if (!out)
+        return BS_E_NULL;
+    out->present = 0;
+    out->voltage = out->storage_voltage = out->power = out->energy = BS_R(0.0);
+#if BS_WITH_PIEZO
+    if (sim->scene->load != BS_LOAD_NONE) {
+        out->present = 1;
+        out->voltage = sim->voltage;
+        out->storage_voltage = sim->storage_voltage;
+        out->power = sim->power;
+        out->energy = sim->energy + sim->energy_low;
+    }
+#endif
+    return BS_OK;
+}
+
+bs_real bs_sim_base_acceleration(const bs_sim *sim)
+{
+    return bs_sim_is_ready(sim) ? sim->base_accel : bs_real_nan();
 }
 
 bs_status bs_sim_set_pcs_position(bs_sim *sim, bs_real s)
@@ -264,11 +330,19 @@ uint32_t bs_sim_hash(const bs_sim *sim)
     n = sim->scene->n_modes;
     hash = hash_bytes(hash, &sim->step, sizeof sim->step);
     hash = hash_bytes(hash, &sim->phase, sizeof sim->phase);
+    hash = hash_bytes(hash, &sim->phase_step_half, sizeof sim->phase_step_half);
+    hash = hash_bytes(hash, &sim->step_accel, sizeof sim->step_accel);
     hash = hash_bytes(hash, sim->q_beam, (unsigned long)n * sizeof(bs_real));
     hash = hash_bytes(hash, sim->u_beam, (unsigned long)n * sizeof(bs_real));
     hash = hash_bytes(hash, sim->slider, sizeof sim->slider);
     hash = hash_bytes(hash, sim->slider_velocity, sizeof sim->slider_velocity);
     hash = hash_bytes(hash, &sim->x_c_low, sizeof sim->x_c_low);
     hash = hash_bytes(hash, sim->percussion, sizeof sim->percussion);
+#if BS_WITH_PIEZO
+    if (sim->scene->load != BS_LOAD_NONE) { /* a scene without a transducer hashes as before */
+        hash = hash_bytes(hash, &sim->voltage, sizeof sim->voltage);
+        hash = hash_bytes(hash, &sim->storage_voltage, sizeof sim->storage_voltage);
+    }
+#endif
     return hash;
 }

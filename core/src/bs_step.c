@@ -1,12 +1,17 @@
 /* bs_step.c - one Moreau midpoint time step of the beam-slider system.
  *
- * Coordinates q = (q_1..q_N, x_C, z_C, beta), M = diag(1..1, m, m, J_C),
- * smooth forces h = (-gamma w0'' - omega^2 q_b - 2 D omega u_b - N(q_b); m g_x; m g_z; 0).
+ * Coordinates q = (q_1..q_N, x_C, z_r, beta), z_r = z_C - w0 the slot's height
+ * relative to the base (docs/model.md 10), M = diag(1..1, m, m, J_C), smooth
+ * forces h = (-gamma a_B - omega^2 q_b - 2 D omega u_b - N(q_b); m g_x; m (g_z - a_B); 0)
+ * with a_B the mean base acceleration over the step: the harmonic excitation's
+ * (bs_sim_step) or a measured one (bs_sim_step_measured). Nothing else of the
+ * base motion enters: no base displacement, no base velocity, so nothing
+ * integrates a measured acceleration.
  * One step from (t_B, q_B, u_B) with fixed dt (docs/model.md 5), in the stages
  * of bs_sim_step below:
- *   1. midpoint:        t_M = t_B + dt/2,  q_M = q_B + dt/2 u_B,  h_M = h(t_M, q_M, u_B)
+ *   1. midpoint:        t_M = t_B + dt/2,  q_M = q_B + dt/2 u_B,  h_M = h(q_M, u_B, a_B)
  *   2. smooth velocity: u_free = u_B + M^-1 h_M dt
- *   3. contacts:        those with g_N(q_M) < 0;  c = W^T u_free + w~ + diag(e_N, 0) (W^T u_B + w~),
+ *   3. contacts:        those with g_N(q_M) < 0;  c = W^T u_free + diag(e_N, 0) W^T u_B,
  *                       G = W^T M^-1 W;  solve xi = G P + c under the contact laws (bs_pgs.c);
  *                       u_E = u_free + M^-1 W P
  *   4. end of step:     q_E = q_M + dt/2 u_E,  t_E = t_B + dt; committed only if finite and
@@ -39,6 +44,7 @@
 #include "bs_contact.h"
 #include "bs_excitation.h"
 #include "bs_pgs.h"
+#include "bs_piezo.h"
 #include "bs_sim_internal.h"
 
 /* The step under way: stage results not yet committed to the sim. */
@@ -48,8 +54,11 @@ typedef struct step_state {
     bs_real slider[3];                 /* slider pose at the midpoint, then at the end */
     bs_real u_slider[3];
     bs_real x_end, x_end_low;          /* compensated x_C at the end */
-    bs_real base_term[BS_MAX_CONTACTS][BS_ROWS]; /* w~ of each active contact */
-    bs_base base;                      /* base motion at t_M */
+    bs_real base_accel;                /* mean base acceleration over the step */
+#if BS_WITH_PIEZO
+    bs_real voltage, storage;          /* patch and storage voltage at the midpoint, then at the end */
+    bs_real power;                     /* into the load, at the midpoint */
+#endif
 } step_state;
 
 /* sum + low += increment, exactly up to the rounding of the new low part. */
@@ -74,7 +83,6 @@ static bs_status smooth_part(const bs_sim *sim, step_state *s)
     bs_real stiffness;
     int k;
 
-    s->base = bs_excitation_at(scene, sim->phase + scene->phase_step_half);
     for (k = 0; k < n; ++k)
         s->q[k] = sim->q_beam[k] + half * sim->u_beam[k];
     for (k = 0; k < 3; ++k)
@@ -86,11 +94,21 @@ static bs_status smooth_part(const bs_sim *sim, step_state *s)
         bs_real q_stiff[BS_MAX_MODES];
         for (k = 0; k < n; ++k)
             q_stiff[k] = sim->q_beam[k] + scene->theta * dt * sim->u_beam[k];
-        stiffness = bs_beam_force(scene, sim->stretch_rows, s->q, q_stiff, sim->u_beam, s->base.acceleration, 0,
-                                  force);
+        stiffness = bs_beam_force(scene, sim->stretch_rows, s->q, q_stiff, sim->u_beam, s->base_accel, 0, force);
     } else
 #endif
-        stiffness = bs_beam_force(scene, sim->stretch_rows, s->q, s->q, sim->u_beam, s->base.acceleration, 1, force);
+        stiffness = bs_beam_force(scene, sim->stretch_rows, s->q, s->q, sim->u_beam, s->base_accel, 1, force);
+#if BS_WITH_PIEZO
+    if (scene->load != BS_LOAD_NONE) { /* the patch to the midpoint; the beam feels its voltage there */
+        s->voltage = sim->voltage;
+        s->storage = sim->storage_voltage;
+        bs_piezo_half_step(scene, bs_piezo_current(scene, sim->u_beam), &s->voltage, &s->storage);
+        s->power = bs_piezo_power(scene, s->voltage, s->storage);
+        for (k = 0; k < n; ++k)
+            force[k] -= scene->piezo_theta[k] * s->voltage;
+        stiffness += sim->piezo_stiffness;
+    }
+#endif
     if (!(stiffness * dt * dt < BS_R(4.0)))
         return BS_E_UNSTABLE;
 
@@ -104,7 +122,9 @@ static bs_status smooth_part(const bs_sim *sim, step_state *s)
         s->u_slider[k] = sim->slider_velocity[k];
 #if BS_WITH_GRAVITY
     s->u_slider[0] += dt * scene->gravity[0];
-    s->u_slider[1] += dt * scene->gravity[1];
+    s->u_slider[1] += dt * (scene->gravity[1] - s->base_accel);
+#else
+    s->u_slider[1] -= dt * s->base_accel; /* the base frame's inertial force */
 #endif
     return BS_OK;
 }
@@ -120,10 +140,9 @@ static bs_status find_contacts(bs_sim *sim, step_state *s)
     frame.z = s->slider[1];
     frame.beta = s->slider[2];
     frame.stops = sim->model == BS_MODEL_FREE;
-    frame.base = s->base;
     frame.cache = sim->side;
     frame.reach = sim->shape_reach;
-    return bs_contact_detect(sim->scene, &frame, &sim->contacts, s->base_term);
+    return bs_contact_detect(sim->scene, &frame, &sim->contacts);
 }
 
 /* 3b: the contact problem, warm-started from the last step's percussions;
@@ -134,8 +153,7 @@ static void solve_contacts(bs_sim *sim, step_state *s)
     bs_contact_set *set = &sim->contacts;
     int a, r;
 
-    bs_contact_free_velocity(scene, set, s->u_beam, s->u_slider, sim->u_beam, sim->slider_velocity,
-                             s->base_term);
+    bs_contact_free_velocity(scene, set, s->u_beam, s->u_slider, sim->u_beam, sim->slider_velocity);
     for (a = 0; a < set->count; ++a)
         for (r = 0; r < BS_ROWS; ++r)
             set->percussion[BS_ROWS * a + r] = sim->percussion[set->id[a]][r];
@@ -169,6 +187,12 @@ static bs_status end_of_step(const bs_sim *sim, step_state *s)
     add_compensated(&s->x_end, &s->x_end_low, half * (sim->slider_velocity[0] + s->u_slider[0]));
     s->slider[1] += half * s->u_slider[1];
     s->slider[2] += half * s->u_slider[2];
+#if BS_WITH_PIEZO
+    if (scene->load != BS_LOAD_NONE) { /* the patch on to the end, driven by the end velocities */
+        bs_piezo_half_step(scene, bs_piezo_current(scene, s->u_beam), &s->voltage, &s->storage);
+        check += s->voltage + s->storage;
+    }
+#endif
     check += s->x_end + s->slider[1] + s->slider[2] + s->u_slider[0] + s->u_slider[1] + s->u_slider[2];
     if (check - check != BS_R(0.0))
         return BS_E_NONFINITE;
@@ -204,17 +228,26 @@ static void commit(bs_sim *sim, const step_state *s)
             sim->percussion[id][r] = sim->contacts.percussion[BS_ROWS * a + r];
     }
     sim->report.active = active;
+    sim->base_accel = s->base_accel;
+#if BS_WITH_PIEZO
+    if (sim->scene->load != BS_LOAD_NONE) {
+        sim->voltage = s->voltage;
+        sim->storage_voltage = s->storage;
+        sim->power = s->power;
+        add_compensated(&sim->energy, &sim->energy_low, s->power * sim->scene->dt);
+    }
+#endif
     sim->step += 1;
-    sim->phase += 2 * sim->scene->phase_step_half;
+    sim->phase += 2 * sim->phase_step_half;
 }
 
-bs_status bs_sim_step(bs_sim *sim)
+/* The step with mean base acceleration base_accel. */
+static bs_status step(bs_sim *sim, bs_real base_accel)
 {
     step_state s;
-    bs_status status = bs_sim_status(sim);
+    bs_status status;
 
-    if (status != BS_OK)
-        return status;
+    s.base_accel = base_accel;
     status = smooth_part(sim, &s);
     if (status != BS_OK)
         return status;
@@ -232,4 +265,22 @@ bs_status bs_sim_step(bs_sim *sim)
         return status;
     commit(sim, &s);
     return BS_OK;
+}
+
+bs_status bs_sim_step(bs_sim *sim)
+{
+    const bs_status status = bs_sim_status(sim);
+    if (status != BS_OK)
+        return status;
+    return step(sim, bs_excitation_step_mean(sim->phase + sim->phase_step_half, sim->step_accel));
+}
+
+bs_status bs_sim_step_measured(bs_sim *sim, bs_real base_accel)
+{
+    const bs_status status = bs_sim_status(sim);
+    if (status != BS_OK)
+        return status;
+    if (base_accel - base_accel != BS_R(0.0)) /* NaN or infinite: refused, nothing changes */
+        return BS_E_ARGUMENT;
+    return step(sim, base_accel);
 }

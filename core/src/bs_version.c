@@ -35,6 +35,10 @@ const char *bs_status_text(bs_status status)
     case BS_E_BUILD: return "program and library built with different configurations (precision, sizes, "
                             "switches or version)";
     case BS_E_UNINITIALISED: return "simulation not initialised (or its initialisation failed)";
+    case BS_E_CHECKPOINT_SIZE: return "checkpoint buffer too small, or a checkpoint of another size";
+    case BS_E_CHECKPOINT_DAMAGED: return "not a checkpoint, or a damaged one (magic, byte order or checksum)";
+    case BS_E_CHECKPOINT_BUILD: return "checkpoint from another version or build (precision, switches, modes)";
+    case BS_E_CHECKPOINT_SCENE: return "checkpoint from another scene, or of a state this simulation cannot take";
     }
     return "unknown status";
 }

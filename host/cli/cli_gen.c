@@ -189,6 +189,7 @@ static void append_switches(text *t, const scene_params *p, const scene_model *m
     append(t, "#define BS_WITH_STRETCHING %d\n", model->stretch_norm > 0.0);
     append(t, "#define BS_WITH_PCS %d\n", p->model == BS_MODEL_PCS);
     append(t, "#define BS_WITH_IMPLICIT %d\n", d->implicit);
+    append(t, "#define BS_WITH_PIEZO %d\n", d->load != BS_LOAD_NONE);
     append(t, "#endif\n#endif\n\n");
 }
 

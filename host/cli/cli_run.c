@@ -1,10 +1,13 @@
 /* cli_run.c - `beamslider run SCENE [options]`: one simulation, CSV and a
- * one-line JSON summary on stdout. */
+ * one-line JSON summary on stdout. With --excitation FILE the base follows a
+ * recorded acceleration instead of the scene's harmonic one (docs/twin.md). */
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
+#include "excitation_file.h"
 #include "run.h"
 #include "scene_build.h"
 #include "summary.h"
@@ -14,7 +17,55 @@ typedef struct run_cli {
     const char *out_path;
     const char *periods_path;
     long every;
+    int t_end_given;               /* --t-end: else a record sets the run's length */
+    const char *excitation_path;   /* --excitation: NULL for the scene's excitation */
+    excitation_file_options record; /* --scale, --channel, --latency */
+    const char *record_option;     /* the first of those given, NULL if none */
 } run_cli;
+
+/* value as a finite number >= 0, or > 0 if positive; -1 after reporting the
+ * option (what: the value's meaning and unit). */
+static int parse_amount(const char *option, const char *value, int positive, const char *what, double *out)
+{
+    char *end;
+    *out = strtod(value, &end);
+    if (end == value || *end || !isfinite(*out) || *out < 0.0 || (positive && *out == 0.0)) {
+        cli_error("%s %s: allowed: a finite number %s 0 (%s)", option, value, positive ? ">" : ">=", what);
+        return -1;
+    }
+    return 0;
+}
+
+/* --excitation and the options of how to read the record; 1 if option is
+ * none of them, 0 when taken, -1 after reporting a bad value. */
+static int parse_record_option(const char *option, const char *value, run_cli *cli)
+{
+    char *end;
+    long channel;
+
+    if (!strcmp(option, "--excitation")) {
+        cli->excitation_path = value;
+        return 0;
+    }
+    if (strcmp(option, "--scale") && strcmp(option, "--channel") && strcmp(option, "--latency"))
+        return 1;
+    if (!cli->record_option)
+        cli->record_option = option;
+    if (!strcmp(option, "--scale")) {
+        cli->record.has_scale = 1;
+        return parse_amount(option, value, 1, "m/s^2 at full scale", &cli->record.scale);
+    }
+    if (!strcmp(option, "--latency"))
+        return parse_amount(option, value, 0, "seconds", &cli->record.latency);
+    errno = 0;
+    channel = strtol(value, &end, 10);
+    if (end == value || *end || errno || channel < 1 || channel > 65535) {
+        cli_error("%s %s: allowed: an integer in [1, 65535] (1 is the first channel)", option, value);
+        return -1;
+    }
+    cli->record.channel = (int)channel;
+    return 0;
+}
 
 /* Options that override a scene field: option name -> [section] key. */
 static const struct override {
@@ -41,6 +92,10 @@ static int parse_options(int argc, char **argv, run_cli *cli, scene_file *file)
     cli->out_path = NULL;
     cli->periods_path = NULL;
     cli->every = 1;
+    cli->t_end_given = 0;
+    cli->excitation_path = NULL;
+    memset(&cli->record, 0, sizeof cli->record);
+    cli->record_option = NULL;
     if (scene_load(cli->scene_path, file, err, sizeof err) != 0) {
         cli_error("%s", err);
         return -1;
@@ -48,6 +103,7 @@ static int parse_options(int argc, char **argv, run_cli *cli, scene_file *file)
     for (i = 1; i < argc; i += 2) {
         const char *option = argv[i];
         const struct override *o;
+        int taken;
         if (i + 1 >= argc) {
             cli_error("option %s needs a value", option);
             return -1;
@@ -59,6 +115,11 @@ static int parse_options(int argc, char **argv, run_cli *cli, scene_file *file)
                 cli_error("%s", err);
                 return -1;
             }
+            if (!strcmp(option, "--t-end"))
+                cli->t_end_given = 1;
+        } else if ((taken = parse_record_option(option, argv[i + 1], cli)) <= 0) {
+            if (taken < 0)
+                return -1;
         } else if (!strcmp(option, "--out")) {
             cli->out_path = argv[i + 1];
         } else if (!strcmp(option, "--periods")) {
@@ -76,7 +137,66 @@ static int parse_options(int argc, char **argv, run_cli *cli, scene_file *file)
             return -1;
         }
     }
+    if (cli->record_option && !cli->excitation_path) {
+        cli_error("%s is about a recorded excitation: give it with --excitation FILE", cli->record_option);
+        return -1;
+    }
     return 0;
+}
+
+/* The recorded excitation of --excitation as step means for options (its
+ * t_end: the record's whole steps unless --t-end was given). 0, or -1
+ * after reporting why (record and *means then hold nothing to free). */
+static int load_record(const run_cli *cli, const scene_file *file, run_options *options,
+                       excitation_file *record, double **means)
+{
+    char err[1024];
+    uint64_t steps;
+
+    *means = NULL;
+    if (file->params.schedule[strspn(file->params.schedule, " \t")]) {
+        char where[SCENE_PATH + 64];
+        cli_error("%s: [excitation] schedule and --excitation both set the excitation: remove one",
+                  scene_where(file, "excitation", "schedule", where, sizeof where));
+        return -1;
+    }
+    if (excitation_file_read(cli->excitation_path, &cli->record, record, err, sizeof err) != 0) {
+        cli_error("%s", err);
+        return -1;
+    }
+    if (cli->t_end_given) {
+        steps = run_step_count(options->t_end, options->dt);
+    } else {
+        steps = excitation_file_steps(record, options->dt);
+        if (steps == 0) {
+            cli_error("%s: the record (%lu samples at %g Hz from t = %g s, latency %g s) covers no step "
+                      "of dt = %g s from t = 0", record->path, (unsigned long)record->samples, record->rate,
+                      record->t0, record->latency, options->dt);
+            excitation_file_free(record);
+            return -1;
+        }
+        options->t_end = (double)steps * options->dt;
+    }
+    *means = malloc(steps > 0 ? steps * sizeof **means : 1);
+    if (!*means)
+        cli_error("%s: %lu steps: out of memory", record->path, (unsigned long)steps);
+    else if (excitation_file_means(record, options->dt, steps, *means, err, sizeof err) != 0)
+        cli_error("%s", err);
+    else
+        return 0;
+    free(*means);
+    *means = NULL;
+    excitation_file_free(record);
+    return -1;
+}
+
+/* Frees what load_record gave (nothing when means is NULL). */
+static void free_record(excitation_file *record, double *means)
+{
+    if (!means)
+        return;
+    free(means);
+    excitation_file_free(record);
 }
 
 /* Closes an output; reports and returns -1 if it misses anything: its own
@@ -102,6 +222,9 @@ int cli_run(int argc, char **argv)
     run_cli cli;
     run_options options;
     run_result result;
+    schedule excitation;
+    excitation_file record;
+    double *means = NULL;
     char err[1024];
     cli_output outputs[2];
     FILE *csv, *periods;
@@ -113,24 +236,32 @@ int cli_run(int argc, char **argv)
         cli_error("%s", err);
         return CLI_USAGE;
     }
+    options.t_end = file.params.t_end;
+    options.dt = file.params.dt;
+    if (cli.excitation_path && load_record(&cli, &file, &options, &record, &means) != 0)
+        return CLI_USAGE;
     /* outputs are opened only once the input is known to be good */
     outputs[0].option = "--out";
     outputs[0].path = cli.out_path;
     outputs[1].option = "--periods";
     outputs[1].path = cli.periods_path;
-    if ((status = cli_open_outputs(outputs, 2, &file)) != CLI_OK)
+    if ((status = cli_open_outputs(outputs, 2, &file)) != CLI_OK) {
+        free_record(&record, means);
         return status;
+    }
     csv = outputs[0].file;
     periods = outputs[1].file;
     options.model = (bs_model)file.params.model;
     options.s0 = file.params.s0;
-    options.t_end = file.params.t_end;
-    options.dt = file.params.dt;
     options.solver = scene_solver(&file.params);
     options.every = cli.every;
     options.csv = csv;
     options.periods = periods;
     options.show_progress = 1;
+    /* the file's schedule was checked when it was read */
+    options.excitation_schedule = schedule_parse(file.params.schedule, &excitation, err, sizeof err) == 0
+                                      ? &excitation : NULL;
+    options.base_accel = means;
     failed = run_scene(&scene, &options, &result) != 0;
     /* a write error ends the run: then both files are reported incomplete */
     {
@@ -142,9 +273,10 @@ int cli_run(int argc, char **argv)
     if (result.status != BS_OK)
         cli_error("%s: stopped at t = %.6f s (step %llu): %s; state and CSV kept up to the last good step",
                   file.params.name, result.t, (unsigned long long)result.steps, bs_status_text(result.status));
-    if (summary_print_run(stdout, &file.params, &scene, &result) != 0) {
+    if (summary_print_run(stdout, &file.params, &scene, means ? &record : NULL, &result) != 0) {
         cli_error("cannot write the summary (out of memory?)");
         failed = 1;
     }
+    free_record(&record, means);
     return failed ? CLI_FAILED : CLI_OK;
 }

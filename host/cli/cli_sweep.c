@@ -213,6 +213,11 @@ int cli_sweep(int argc, char **argv)
         cli_error("%s", err);
         return CLI_USAGE;
     }
+    if (file.params.schedule[0]) { /* a sweep holds the excitation at each point */
+        cli_error("%s: [excitation] schedule = %s: a sweep runs at the scene's constant excitation; "
+                  "use beamslider run for a varying one", file.files[0], file.params.schedule);
+        return CLI_USAGE;
+    }
     outputs[0].option = "--out";
     outputs[0].path = cli.out_path;
     outputs[1].option = "--trace";

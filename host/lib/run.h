@@ -5,9 +5,11 @@
 #include <stdint.h>
 #include <stdio.h>
 #include "beamslider.h"
+#include "schedule.h"
 #include "solve_tally.h"
 
 #define RUN_AMP_PERIODS 25 /* amplitude: mean over the last 25 excitation periods */
+#define RUN_POWER_WINDOW 10.0 /* [s] harvested power: also the mean over the run's last 10 s */
 
 typedef struct run_options {
     bs_model model;
@@ -19,6 +21,10 @@ typedef struct run_options {
     FILE *csv;           /* NULL: no CSV */
     FILE *periods;       /* NULL: no per-period CSV (run_periods_header) */
     int show_progress;   /* progress bar on a terminal */
+    const schedule *excitation_schedule; /* NULL or no points: the scene's constant excitation */
+    const double *base_accel;  /* NULL: the harmonic excitation (the scene's or the schedule's);
+                                  else a measured one: the mean base acceleration of each step
+                                  [m/s^2], run_step_count(t_end, dt) values (bs_sim_step_measured) */
 } run_options;
 
 typedef struct run_result {
@@ -34,14 +40,26 @@ typedef struct run_result {
     double wall_s;
     solve_tally solve;         /* the contact solves */
     uint32_t hash;             /* bs_sim_hash of the final state */
+    int transducer;            /* 1: the scene has a transducer, and the figures below are set */
+    double energy;             /* into its load over the run [J] */
+    double power_mean;         /* energy / t [W] (0 after no step) */
+    double power_window;       /* the window of power_last: the last RUN_POWER_WINDOW s, or the
+                                  whole run if it is shorter [s] */
+    double power_last;         /* mean power into the load over that window [W]; NaN unless
+                                  the run completed */
 } run_result;
 
-/* Runs scene from rest for round(t_end / dt) steps. Returns 0 when the run
- * completed and its CSV was written, -1 otherwise (result says why). */
+/* The steps of a run: round(t_end / dt). */
+uint64_t run_step_count(double t_end, double dt);
+
+/* Runs scene from rest for run_step_count(t_end, dt) steps. Returns 0 when
+ * the run completed and its CSV was written, -1 otherwise (result says why). */
 int run_scene(const bs_scene *scene, const run_options *options, run_result *result);
 
-/* CSV header lines of run_scene's step rows and per-period rows. */
+/* CSV header lines of run_scene's step rows and per-period rows; with a
+ * transducer the step rows end in run_transducer_columns. */
 extern const char run_csv_header[];
+extern const char run_transducer_columns[];
 extern const char run_periods_header[];
 
 #endif

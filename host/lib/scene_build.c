@@ -110,13 +110,53 @@ static void compute_slider(const scene_params *p, scene_data *d)
     d->e_n = p->e_n;
 }
 
+/* The patch's modal couplings theta_k = Theta (phi_k'(x_2) - phi_k'(x_1))
+ * (phi' = d phi / dx; docs/model.md 11). */
+static void patch_couplings(const scene_params *p, const modal_set *modes, double *theta)
+{
+    int k;
+    for (k = 0; k < modes->n; ++k) {
+        double phi, start_slope, end_slope;
+        modal_shape(modes, k, p->patch_start / p->beam.length, &phi, &start_slope);
+        modal_shape(modes, k, p->patch_end / p->beam.length, &phi, &end_slope);
+        theta[k] = p->coupling * (end_slope - start_slope) / p->beam.length;
+    }
+}
+
+/* The patch and its load (docs/model.md 11): the modal couplings, the clamp
+ * stop on the patch's side moved to its end plus B/2 (the slider cannot pass
+ * over it), and the exact half-step factors of the circuit (core/src/bs_piezo.c). */
+static void compute_transducer(const scene_params *p, const modal_set *modes, scene_data *d)
+{
+    const double half_step = 0.5 * p->dt;
+
+    d->load = p->load;
+    if (p->load == SCENE_LOAD_NONE)
+        return;
+    patch_couplings(p, modes, d->piezo_theta);
+    if (p->patch_start == 0.0)
+        d->stop_min = fmax(d->stop_min, p->patch_end + 0.5 * p->slot_width);
+    else
+        d->stop_max = fmin(d->stop_max, p->patch_start - 0.5 * p->slot_width);
+    d->piezo_capacitance_inv = 1.0 / p->capacitance;
+    if (p->load == SCENE_LOAD_RESISTOR) {
+        const double tau = p->resistance * p->capacitance;
+        d->load_decay = exp(-half_step / tau);
+        d->load_gain = -p->resistance * expm1(-half_step / tau); /* R (1 - decay), exact for large R */
+        d->load_conductance = 1.0 / p->resistance;
+    } else {
+        d->load_decay = exp(-half_step / (p->storage_resistance * p->storage_capacitance));
+        d->load_conductance = 1.0 / p->storage_resistance;
+        d->storage_capacitance_inv = 1.0 / p->storage_capacitance;
+        d->bridge_drop = 2.0 * p->diode_drop;
+    }
+}
+
 static void compute_numerics(const scene_params *p, scene_data *d)
 {
-    const double omega = 2.0 * 3.14159265358979323846 * p->frequency;
     int k;
     d->base_accel = p->acceleration;
-    d->base_velocity = p->acceleration / omega;
-    d->base_displacement = p->acceleration / (omega * omega);
+    d->frequency = p->frequency;
     d->phase_step_half = (uint64_t)llround(ldexp(0.5 * p->frequency * p->dt, 64));
     d->dt = p->dt;
     d->implicit = p->implicit;
@@ -165,6 +205,32 @@ static int check_derived(const scene_file *file, const scene_model *model, char 
                  scene_where(file, "beam", "length", where2, sizeof where2));
         return -1;
     }
+    if (p->load != SCENE_LOAD_NONE) {
+        const double stop = p->patch_start == 0.0 ? p->patch_end + 0.5 * p->slot_width
+                                                  : p->patch_start - 0.5 * p->slot_width;
+        if (!(p->patch_start < p->patch_end && p->patch_end <= p->beam.length)) {
+            snprintf(err, size, "%s: [transducer] patch_start = %g m, patch_end = %g m: the patch must lie "
+                     "within the beam, 0 <= patch_start < patch_end <= length (%g m)",
+                     scene_where(file, "transducer", "patch_end", where, sizeof where), p->patch_start,
+                     p->patch_end, p->beam.length);
+            return -1;
+        }
+        if (p->patch_start != 0.0 && p->patch_end != p->beam.length) {
+            snprintf(err, size, "%s: [transducer] the patch (%g m to %g m) must start at the left clamp "
+                     "(patch_start = 0) or end at the right one (patch_end = length = %g m): the slider "
+                     "could not pass it",
+                     scene_where(file, "transducer", "patch_start", where, sizeof where), p->patch_start,
+                     p->patch_end, p->beam.length);
+            return -1;
+        }
+        if (!(p->patch_start == 0.0 ? stop < p->beam.length - 0.5 * p->slot_width : stop > 0.5 * p->slot_width)) {
+            snprintf(err, size, "%s: [transducer] the patch (%g m to %g m) leaves the slider no room "
+                     "between it and the other clamp",
+                     scene_where(file, "transducer", "patch_end", where, sizeof where), p->patch_start,
+                     p->patch_end);
+            return -1;
+        }
+    }
     if (!p->implicit && !(omega_max * p->dt < 2.0)) {
         bound_text(2.0 / omega_max, 1, limit, sizeof limit);
         snprintf(err, size,
@@ -173,6 +239,33 @@ static int check_derived(const scene_file *file, const scene_model *model, char 
                  scene_where(file, "numerics", "dt", where, sizeof where), p->dt, omega_max * p->dt,
                  model->modes.n, omega_max / (2.0 * 3.14159265358979323846), limit);
         return -1;
+    }
+    if (p->load != SCENE_LOAD_NONE) {
+        /* The open patch stiffens the beam by theta theta^T / C_p, explicitly
+         * integrated by either integrator: the step's bound (core/src/bs_step.c,
+         * bs_sim_init) adds max_k |theta_k| sum_j |theta_j| / C_p to omega_max^2
+         * (explicit) or to nothing (implicit), so a scene beyond it could not
+         * take its first step. */
+        double theta[BS_MAX_MODES], largest = 0.0, sum = 0.0, patch, stiffness;
+        int k;
+        patch_couplings(p, &model->modes, theta);
+        for (k = 0; k < model->modes.n; ++k) {
+            sum += fabs(theta[k]);
+            largest = fmax(largest, fabs(theta[k]));
+        }
+        patch = largest * sum / p->capacitance;
+        stiffness = (p->implicit ? 0.0 : omega_max * omega_max) + patch;
+        if (!(stiffness * p->dt * p->dt < 4.0)) {
+            bound_text(2.0 / sqrt(stiffness), 1, limit, sizeof limit);
+            snprintf(err, size,
+                     "%s: [transducer] coupling = %g N m/V: the open patch's stiffness theta theta^T / C_p "
+                     "(bound %.4g 1/s^2, C_p = %g F) brings the explicitly integrated stiffness to %.4g 1/s^2, "
+                     "above the limit 4 / dt^2 = %.4g 1/s^2; allowed: dt < %s s, a smaller |coupling| or a "
+                     "larger capacitance",
+                     scene_where(file, "transducer", "coupling", where, sizeof where), p->coupling, patch,
+                     p->capacitance, stiffness, 4.0 / (p->dt * p->dt), limit);
+            return -1;
+        }
     }
     if (!(p->frequency * p->dt < 0.5)) {
         bound_text(0.5 / p->frequency, 1, limit, sizeof limit);
@@ -255,12 +348,10 @@ static const struct {
     { "corner", { { "slider", "com_offset" }, { "slider", "play_ratio" }, { "beam", "thickness" },
                   { "slider", "slot_width" } } },
     { "com_offset", { { "slider", "com_offset" } } },
-    { "com_offset/base_displacement", { { "slider", "com_offset" }, { "excitation", "acceleration" },
-                                        { "excitation", "frequency" } } },
     { "base_accel", { { "excitation", "acceleration" } } },
-    { "base_velocity", { { "excitation", "acceleration" }, { "excitation", "frequency" } } },
-    { "base_displacement", { { "excitation", "acceleration" }, { "excitation", "frequency" } } },
+    { "frequency", { { "excitation", "frequency" } } },
     { "phase_step_half", { { "excitation", "frequency" }, { "numerics", "dt" } } },
+    { "frequency/phase_step_half", { { "excitation", "frequency" }, { "numerics", "dt" } } },
     { "dt", { { "numerics", "dt" } } },
     { "mass_inv", { { "slider", "mass" } } },
     { "inertia_inv", { { "slider", "inertia" } } },
@@ -271,6 +362,16 @@ static const struct {
     { "mode_gain", { { "numerics", "dt" }, { "numerics", "theta" }, MODAL_INPUTS } },
     { "damping", { { "beam", "damping_ratio" }, MODAL_INPUTS } },
     { "stretch", { MODAL_INPUTS, { "clamps", "axial_stiffness" } } },
+    { "load", { { "transducer", "load" } } },
+    { "piezo_theta", { { "transducer", "coupling" }, { "transducer", "capacitance" }, { "numerics", "dt" },
+                       { "transducer", "patch_start" }, { "transducer", "patch_end" } } },
+    { "piezo_capacitance_inv", { { "transducer", "capacitance" } } },
+    { "load_decay", { { "transducer", "resistance" }, { "transducer", "capacitance" },
+                      { "transducer", "storage_resistance" }, { "transducer", "storage_capacitance" } } },
+    { "load_gain", { { "transducer", "resistance" }, { "transducer", "capacitance" } } },
+    { "load_conductance", { { "transducer", "resistance" }, { "transducer", "storage_resistance" } } },
+    { "storage_capacitance_inv", { { "transducer", "storage_capacitance" } } },
+    { "bridge_drop", { { "transducer", "diode_drop" } } },
     { NULL, { MODAL_INPUTS } }, /* omega_sq, gamma, phi_sensor, shape_coef: the modal data */
 };
 
@@ -384,6 +485,12 @@ static void report_core_refusal(const scene_file *file, bs_status status, const 
     const int count = input_count(origins[origin].inputs);
     char where[SCENE_PATH + 16];
 
+    if (!BS_WITH_PIEZO && strcmp(field, "load") == 0) {
+        snprintf(err, size, "%s: this beamslider is built without the transducer (BS_WITH_PIEZO 0): "
+                 "[transducer] load must be none", scene_limits_blame(file, origins[origin].inputs, count, where,
+                                                                      sizeof where));
+        return;
+    }
     snprintf(err, size, "%s: the core refuses the scene: %s (field %s): the values are too extreme for %s; "
              "allowed, each with the others as set: ",
              scene_limits_blame(file, origins[origin].inputs, count, where, sizeof where), bs_status_text(status),
@@ -418,6 +525,7 @@ int scene_build(const scene_file *file, bs_scene *scene, scene_model *model, cha
     memset(&model->data, 0, sizeof model->data);
     compute_modes(p, &model->modes, &model->data, &model->stretch_norm);
     compute_slider(p, &model->data);
+    compute_transducer(p, &model->modes, &model->data);
     compute_numerics(p, &model->data);
     scene_data_set_shapes(&model->data, &model->fit);
     scene_data_round(&model->data, scene);

@@ -12,6 +12,7 @@ const char *const scene_models[] = { "free", "pcs", 0 };
 const char *const scene_rotations[] = { "locked", "free", 0 };
 const char *const scene_switches[] = { "off", "on", 0 };
 const char *const scene_integrators[] = { "explicit", "implicit", 0 };
+const char *const scene_loads[] = { "none", "resistor", "rectifier", 0 };
 
 #define SPEC(kind, section, key, member, where, low, high, low_open, high_open, default_text, unit, meaning, \
              choices)                                                                                    \

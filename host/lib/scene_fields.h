@@ -37,6 +37,11 @@ extern const char *const scene_models[];       /* free, pcs (= bs_model) */
 extern const char *const scene_rotations[];    /* locked, free (rotation = 1: free) */
 extern const char *const scene_switches[];     /* off, on */
 extern const char *const scene_integrators[];  /* explicit, implicit */
+extern const char *const scene_loads[];        /* none, resistor, rectifier (SCENE_LOAD_*) */
+
+/* [transducer] load: what the piezoelectric patch drives (docs/model.md 11);
+ * the choice's index is the core's bs_load. */
+enum { SCENE_LOAD_NONE = BS_LOAD_NONE, SCENE_LOAD_RESISTOR = BS_LOAD_RESISTOR, SCENE_LOAD_RECTIFIER = BS_LOAD_RECTIFIER };
 
 #define SCENE_FIELDS(X)                                                                                      \
     X(TEXT, "scene", "name", name, OWN, 0, 0, 0, 0, "", "", "scene name (default: the file name without .ini)", 0) \
@@ -70,6 +75,9 @@ extern const char *const scene_integrators[];  /* explicit, implicit */
     X(REAL, "excitation", "frequency", frequency, OWN, 0, HUGE_VAL, 1, 1, 0, "Hz", "excitation frequency f_ex", 0) \
     X(REAL, "excitation", "acceleration", acceleration, OWN, 0, HUGE_VAL, 0, 1, 0, "m/s^2",                   \
       "base acceleration amplitude a", 0)                                                                   \
+    X(TEXT, "excitation", "schedule", schedule, OWN, 0, 0, 0, 0, "", "s Hz m/s^2",                              \
+      "a varying excitation: t:f:a[, t:f:a ...], frequency and amplitude linear in time between the points "   \
+      "(held before the first and after the last; the phase stays continuous); empty: constant", 0)          \
     X(INT, "numerics", "modes", modes, OWN, 1, BS_MAX_MODES, 0, 0, 0, "", "number of beam modes N", 0)         \
     X(CHOICE, "numerics", "stretching", stretching, OWN, 0, 0, 0, 0, "on", "",                                 \
       "on | off: the cubic bending-stretching term", scene_switches)                                         \
@@ -85,6 +93,23 @@ extern const char *const scene_integrators[];  /* explicit, implicit */
       "N s", "absolute tolerance of the contact solve", 0)                                                  \
     X(CHOICE, "solver", "residual", solver_residual, OWN, 0, 0, 0, 0, "on", "",                               \
       "on | off: report the residual of every contact step (off: only where the solve needs it)", scene_switches)    \
+    X(CHOICE, "transducer", "load", load, OWN, 0, 0, 0, 0, "none", "",                                        \
+      "none | resistor | rectifier: the piezoelectric patch and what it drives (none: no patch)", scene_loads) \
+    X(REAL, "transducer", "patch_start", patch_start, OWN, 0, HUGE_VAL, 0, 1, "0", "m",                       \
+      "x_1, where the patch begins (from the left clamp)", 0)                                               \
+    X(REAL, "transducer", "patch_end", patch_end, OWN, 0, HUGE_VAL, 1, 1, "0.02", "m",                         \
+      "x_2, where it ends; the clamp stop on its side moves to x_2 + B/2", 0)                               \
+    X(REAL, "transducer", "coupling", coupling, OWN, -HUGE_VAL, HUGE_VAL, 1, 1, "9.7e-5", "N m/V",            \
+      "Theta, bending moment per volt (sign of e31)", 0)                                                    \
+    X(REAL, "transducer", "capacitance", capacitance, OWN, 0, HUGE_VAL, 1, 1, "18e-9", "F", "C_p, the patch's capacitance", 0) \
+    X(REAL, "transducer", "resistance", resistance, OWN, 0, HUGE_VAL, 1, 1, "71e3", "Ohm",                     \
+      "R_l, the resistor load across the patch (load = resistor)", 0)                                      \
+    X(REAL, "transducer", "storage_capacitance", storage_capacitance, OWN, 0, HUGE_VAL, 1, 1, "10e-6", "F",   \
+      "C_s, charged through a full-bridge rectifier (load = rectifier)", 0)                                 \
+    X(REAL, "transducer", "storage_resistance", storage_resistance, OWN, 0, HUGE_VAL, 1, 1, "1e6", "Ohm",      \
+      "R_s, the load across C_s (load = rectifier)", 0)                                                     \
+    X(REAL, "transducer", "diode_drop", diode_drop, OWN, 0, HUGE_VAL, 0, 1, "0", "V",                          \
+      "forward voltage of each bridge diode (load = rectifier; two conduct at a time)", 0)                  \
     X(REAL, "run", "s0", s0, OWN, 0, 1, 0, 0, 0, "", "start position x_C / L (PCS: prescribed position)", 0)   \
     X(REAL, "run", "t_end", t_end, OWN, 0, HUGE_VAL, 1, 1, 0, "s", "simulated time", 0)                        \
     X(CHOICE, "run", "model", model, OWN, 0, 0, 0, 0, 0, "", "free | pcs (the model variant, bs_model)", scene_models)

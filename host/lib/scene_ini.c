@@ -33,6 +33,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "schedule.h"
+
 typedef struct reader {
     FILE *file;
     int line;
@@ -260,6 +262,14 @@ static int assign(scene_params *params, const field_spec *f, const char *value, 
         if (!is_utf8(value)) {
             snprintf(why, size, "not UTF-8 text; allowed: %s (UTF-8)", range);
             return -1;
+        }
+        if (f->offset == offsetof(scene_params, schedule)) { /* a text with a syntax of its own */
+            schedule parsed;
+            char what[160];
+            if (schedule_parse(value, &parsed, what, sizeof what) != 0) {
+                snprintf(why, size, "%s", what);
+                return -1;
+            }
         }
         strcpy(target, value);
         return 0;

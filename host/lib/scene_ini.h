@@ -7,7 +7,10 @@
 
 #define SCENE_PATH 512
 #define SCENE_MAX_FILES 8
-#define SCENE_MAX_FIELDS 40
+/* The number of fields of the table (scene_fields.h): one per X. */
+#define SCENE_COUNT_FIELD(kind, section, key, member, where, low, high, low_open, high_open, default_text, \
+                          unit, meaning, choices) +1
+enum { SCENE_MAX_FIELDS = 0 SCENE_FIELDS(SCENE_COUNT_FIELD) };
 /* A scene file (and each base) is a regular file of at most this many bytes
  * (1 MiB; the shipped ones are under 2 KiB): a FIFO, a device or a huge file
  * would otherwise be read for ever. */

@@ -39,7 +39,7 @@ typedef enum bound { BELOW = 1, ABOVE = 2, BOTH = 3 } bound; /* which limits app
 typedef enum condition { ALWAYS, IF_ROTATION, IF_IMPLICIT, IF_AXIAL_STRETCH, IF_BEAM_STRETCH } condition;
 typedef enum constant {
     K_ONE, K_HALF, K_TWO, K_FOUR, K_TWELFTH, K_TWELVE, K_OMEGA_SQ, K_DAMPING, K_SLOPE, K_STRETCH,
-    K_BASE_VELOCITY, K_BASE_DISPLACEMENT, K_PIECES, K_GAIN
+    K_PIECES, K_GAIN
 } constant;
 
 typedef struct derived {
@@ -98,10 +98,7 @@ static const derived quantities[] = {
     { "gravity", IN_CORE, ABOVE, ALWAYS, K_ONE, { { "environment", "gravity", 1 } } },
     { "the friction coefficient", IN_CORE, ABOVE, ALWAYS, K_ONE, { { "contact", "friction", 1 } } },
     { "the base acceleration a", IN_CORE, ABOVE, ALWAYS, K_ONE, { { "excitation", "acceleration", 1 } } },
-    { "the base velocity a / (2 pi f_ex)", IN_CORE, ABOVE, ALWAYS, K_BASE_VELOCITY,
-      { { "excitation", "acceleration", 1 }, { "excitation", "frequency", -1 } } },
-    { "the base displacement a / (2 pi f_ex)^2 (and the start height)", IN_CORE, ABOVE, ALWAYS,
-      K_BASE_DISPLACEMENT, { { "excitation", "acceleration", 1 }, { "excitation", "frequency", -2 } } },
+    { "the excitation frequency", IN_CORE, BOTH, ALWAYS, K_ONE, { { "excitation", "frequency", 1 } } },
     { "f_ex dt (the phase step f_ex dt 2^63 must not round to 0)", PHASE_STEP, BELOW, ALWAYS, K_ONE,
       { { "excitation", "frequency", 1 }, { "numerics", "dt", 1 } } },
     { "the time step", IN_CORE, BOTH, ALWAYS, K_ONE, { { "numerics", "dt", 1 } } },
@@ -145,8 +142,6 @@ static double log_constant(constant c, const scene_params *p, int upper)
     case K_DAMPING: return log(2.0) + 2.0 * log(lambda) - 0.5 * log(12.0);
     case K_SLOPE: return log(2.0) + 2.0 * log(lambda);
     case K_STRETCH: return 0.5 * log(2.0) + 2.0 * log(lambda);
-    case K_BASE_VELOCITY: return -log(2.0 * PI);
-    case K_BASE_DISPLACEMENT: return log(2.0) - 2.0 * log(2.0 * PI);
     case K_PIECES: return log((double)BS_SHAPE_MAX_PIECES);
     case K_GAIN: return log(2.0) + 2.0 * log(p->theta) + 4.0 * log(lambda) - log(12.0);
     }

@@ -5,6 +5,7 @@
 #include "bs_revision.h"
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 /* A summary being built; failed: some part could not be added. */
 typedef struct summary {
@@ -82,7 +83,36 @@ static int finish(summary *s, FILE *out)
     return status;
 }
 
-int summary_print_run(FILE *out, const scene_params *p, const bs_scene *scene, const run_result *r)
+/* Where the base acceleration came from: "harmonic" (the scene's),
+ * "schedule" ([excitation] schedule) or "file", with the record's name,
+ * format, rate, samples and the latency it was read with. */
+static void add_excitation(summary *s, const scene_params *p, const excitation_file *record)
+{
+    if (!record) {
+        add_text(s, "excitation", p->schedule[strspn(p->schedule, " \t")] ? "schedule" : "harmonic");
+        return;
+    }
+    add_text(s, "excitation", "file");
+    add_text(s, "excitation_file", record->path);
+    add_text(s, "excitation_format", record->format);
+    add_number(s, "excitation_rate", "%.9g", record->rate);
+    add_count(s, "excitation_samples", (unsigned long long)record->samples);
+    add_number(s, "excitation_latency", "%.9g", record->latency);
+}
+
+/* What the transducer's load received (only for a scene with one). */
+static void add_harvest(summary *s, const run_result *r)
+{
+    if (!r->transducer)
+        return;
+    add_number(s, "energy_j", "%.6g", r->energy);
+    add_number(s, "power_mean_w", "%.6g", r->power_mean);
+    add_number(s, "power_last_w", "%.6g", r->power_last);
+    add_number(s, "power_window_s", "%.9g", r->power_window);
+}
+
+int summary_print_run(FILE *out, const scene_params *p, const bs_scene *scene, const excitation_file *record,
+                      const run_result *r)
 {
     summary s;
     char hash[16];
@@ -94,6 +124,7 @@ int summary_print_run(FILE *out, const scene_params *p, const bs_scene *scene, c
     add_text(&s, "precision", BS_REAL_NAME);
     add_int(&s, "modes", scene->n_modes);
     add_number(&s, "dt", "%g", p->dt);
+    add_excitation(&s, p, record);
     add_text(&s, "status", r->write_failed ? "write error" : bs_status_text(r->status));
     add_number(&s, "t_end", "%.9g", r->t);
     add_count(&s, "steps", (unsigned long long)r->steps);
@@ -103,6 +134,7 @@ int summary_print_run(FILE *out, const scene_params *p, const bs_scene *scene, c
     add_number(&s, "t_s_min", "%.6f", r->t_s_min);
     add_number(&s, "amp_final_h", "%.6g", r->amp_final_h);
     add_int(&s, "amp_periods", r->amp_periods);
+    add_harvest(&s, r);
     add_number(&s, "wall_s", "%.4g", r->wall_s);
     add_number(&s, "steps_per_s", "%.4g", r->wall_s > 0.0 ? (double)r->steps / r->wall_s : 0.0);
     add_contact_figures(&s, &r->solve);

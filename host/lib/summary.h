@@ -12,14 +12,17 @@
 
 #include <stdio.h>
 #include "beamslider.h"
+#include "excitation_file.h"
 #include "run.h"
 #include "scene_params.h"
 #include "sweep.h"
 
 /* Writes the summary of a run of scene (params as read) and a newline to
- * out. Returns 0, or -1 when it could not be built (out of memory) or
- * written. */
-int summary_print_run(FILE *out, const scene_params *params, const bs_scene *scene, const run_result *result);
+ * out. record: the recorded excitation the run replayed, NULL for the
+ * harmonic one (the scene's, or its schedule). Returns 0, or -1 when it
+ * could not be built (out of memory) or written. */
+int summary_print_run(FILE *out, const scene_params *params, const bs_scene *scene,
+                      const excitation_file *record, const run_result *result);
 
 /* The same for a sweep over options. */
 int summary_print_sweep(FILE *out, const scene_params *params, const bs_scene *scene,

@@ -97,7 +97,7 @@ verdict=$([ $status -eq 0 ] && echo "Every mean is within +-$TOLERANCE % of the 
 cat > "$OUT" <<DOC
 # Slow dynamics against a baseline
 
-Produced by \`make baseline-check BASELINE=$BASELINE\` (host/reports/baseline_check.sh) on
+Produced by \`make baseline-check BASELINE=$BASELINE$( [ "$OUT" = docs/baseline.md ] || printf " OUT=%s" "$OUT")\` (host/reports/baseline_check.sh) on
 $(date -u +%Y-%m-%d), $ENSEMBLE runs per build and precision: this tree's build ($(build/double/beamslider --version | sed 's/, core precision.*//'))
 against commit $(git rev-parse --short "$commit") ($(git log -1 --format=%s "$commit" | cut -c1-60)...).
 

@@ -5,6 +5,8 @@
 #   make accuracy       error against run time vs the reference -> docs/accuracy.md
 #   make stability      the stiff and extreme cases -> docs/stability.md
 #   make bench          steps per second -> docs/performance.md
+#   make harvester-report  harvested power over a load sweep, self-tuning under
+#                       electrical damping, a moving ambient frequency -> docs/harvester.md
 #   make baseline-check [BASELINE=COMMIT]
 #                       the slow dynamics of fig6 over ensembles, this tree against
 #                       COMMIT (default: 0.5.0, before the contact-solve redesign)
@@ -16,7 +18,7 @@
 #
 # `make test` also runs sweep-check (host/reports/figures/check_sweep.sh).
 
-.PHONY: fig6-report accuracy stability bench baseline-check figures sweep-check deps-figures
+.PHONY: fig6-report accuracy stability bench baseline-check harvester-report figures sweep-check deps-figures
 
 fig6-report:
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
@@ -40,6 +42,11 @@ bench:
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
 	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
 	sh host/reports/bench.sh
+
+harvester-report: deps-figures
+	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
+	sh host/reports/harvester_report.sh
 
 BASELINE ?= b0fa6bb
 baseline-check:

@@ -67,13 +67,14 @@ else
     passed=$((passed + 1))
     echo "ok   - s0 at the edge creates no --out file"
 fi
-# values each in range whose product overflows: the start height
-# base_displacement - com_offset = a / (2 pi f)^2 - d
-printf "$good" | sed 's/^frequency = 124$/frequency = 1e-160/' >"$tmp/overflow.ini"
-expect "excitation whose displacement overflows: blames the frequency's line" 2 \
-    "overflow.ini:4: the values make the base" run "$tmp/overflow.ini"
-expect "... and gives the acceleration's line and range" 2 \
-    "[excitation] acceleration = 14 m/s^2 ($tmp/overflow.ini:5): [0, " run "$tmp/overflow.ini"
+# values each in range whose product is out of range: a phase step
+# f_ex dt that rounds to zero in the 2^-64 turns the phase counts (float:
+# a frequency below the smallest normal float is refused first)
+printf "$good" | sed 's/^frequency = 124$/frequency = 1e-160/' >"$tmp/slow.ini"
+expect "a phase step that rounds to zero: blames the frequency's line" 2 \
+    "slow.ini:4: the values make" run "$tmp/slow.ini"
+expect "... and gives the frequency's range" 2 \
+    "[excitation] frequency = 1e-160 Hz ($tmp/slow.ini:4): [5.421011e-15, " run "$tmp/slow.ini"
 # a denormal thickness gave NaN frequencies, blamed on dt
 printf "$good" | sed 's/^\[excitation\]$/[beam]\nthickness = 1e-320\n[excitation]/' >"$tmp/denormal.ini"
 expect "a denormal thickness is blamed on the thickness" 2 "denormal.ini:4: the values make" run "$tmp/denormal.ini"

@@ -26,9 +26,12 @@
  *   scene edits: target byte, index (2 bytes), value (see take_value)
  *   s0: value edit of 0.3
  *   then opcodes until the input ends (at most FUZZ_MAX_STEPS steps in all),
- *   op % 9: 0-2 run (op >> 3) * 2 + 1 steps, 3-4 bs_sim_set_state, 5 PCS
+ *   op % 12: 0-2 run (op >> 3) * 2 + 1 steps, 3-4 bs_sim_set_state, 5 PCS
  *   move, 6 queries and NULL arguments, 7 restart with another s0, 8 new
- *   contact-solve settings (bs_sim_set_solver).
+ *   contact-solve settings (bs_sim_set_solver), 9 a step on a measured base
+ *   acceleration, 10 new excitation (bs_sim_set_excitation), 11 checkpoint
+ *   round trip (save, restore into another sim, both step alike; a damaged
+ *   copy is refused).
  * FUZZ_VERBOSE in the environment prints what an input does.
  */
 #include <float.h>
@@ -394,8 +397,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     while (in.size > 0 && steps < FUZZ_MAX_STEPS) {
         const unsigned op = take_byte(&in);
         if (verbose)
-            fprintf(stderr, "op %u (%u) after %d steps\n", op % 9, op, steps);
-        switch (op % 9) {
+            fprintf(stderr, "op %u (%u) after %d steps\n", op % 12, op, steps);
+        switch (op % 12) {
         case 0:
         case 1:
         case 2: { /* run up to 64 steps, or until the step refuses */
@@ -458,6 +461,54 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         case 8:
             set_solver(&in);
             break;
+        case 9: { /* a measured input: refused without a trace unless finite */
+            const uint32_t before = bs_sim_hash(&sim);
+            const bs_real a = take_value(&in, BS_R(3.0));
+            status = bs_sim_step_measured(&sim, a);
+            ++steps;
+            if (!(a - a == BS_R(0.0)) && (status != BS_E_ARGUMENT || bs_sim_hash(&sim) != before))
+                fuzz_fail("bs_sim_step_measured took a base acceleration that is not finite");
+            if (status != BS_OK && bs_sim_hash(&sim) != before)
+                fuzz_fail("a refused measured step changed the state");
+            break;
+        }
+        case 10: { /* new frequency and amplitude: documented range or nothing changes */
+            const uint32_t before = bs_sim_hash(&sim);
+            const bs_real f = take_value(&in, BS_R(124.0)), a = take_value(&in, BS_R(14.0));
+            const double fdt = (double)f * (double)scene.dt;
+            const int valid = fdt > 0.0 && fdt < 0.5 && a >= BS_R(0.0) && a - a == BS_R(0.0);
+            status = bs_sim_set_excitation(&sim, f, a);
+            if (valid && status != BS_OK && status != BS_E_ARGUMENT)
+                fuzz_fail("bs_sim_set_excitation: undocumented status");
+            if (!valid && status != BS_E_ARGUMENT)
+                fuzz_fail("bs_sim_set_excitation accepted a frequency or amplitude out of range");
+            if (status != BS_OK && bs_sim_hash(&sim) != before)
+                fuzz_fail("a refused bs_sim_set_excitation changed the state");
+            break;
+        }
+        case 11: { /* checkpoint round trip */
+            static unsigned char bytes[BS_CHECKPOINT_SIZE];
+            static bs_sim restored;
+            bs_status a, b;
+            if (bs_sim_save(&sim, bytes, sizeof bytes) != BS_OK)
+                fuzz_fail("bs_sim_save refused a ready sim");
+            if (bs_sim_init(&restored, &scene, model, s0) != BS_OK)
+                fuzz_fail("bs_sim_init refused what it accepted before");
+            bytes[(op >> 3) % (BS_CHECKPOINT_SIZE - 40) + 36] ^= 0x01u; /* a bit of the state part */
+            if (bs_sim_restore(&restored, bytes, sizeof bytes) != BS_E_CHECKPOINT_DAMAGED)
+                fuzz_fail("bs_sim_restore took a damaged checkpoint");
+            bytes[(op >> 3) % (BS_CHECKPOINT_SIZE - 40) + 36] ^= 0x01u;
+            if (bs_sim_restore(&restored, bytes, sizeof bytes) != BS_OK)
+                fuzz_fail("bs_sim_restore refused a checkpoint of a state the step produced");
+            if (bs_sim_hash(&restored) != bs_sim_hash(&sim))
+                fuzz_fail("a restored sim differs from the one saved");
+            a = bs_sim_step(&sim);
+            b = bs_sim_step(&restored);
+            ++steps;
+            if (a != b || bs_sim_hash(&restored) != bs_sim_hash(&sim))
+                fuzz_fail("a restored sim steps differently from the one saved");
+            break;
+        }
         default: /* restart with another s0 */
             s0 = take_value(&in, s0);
             status = bs_sim_init(&sim, &scene, model, s0);

@@ -1,9 +1,10 @@
-/* ref_kinematics.c - gaps and force directions (docs/model.md 4).
+/* ref_kinematics.c - gaps and force directions (docs/model.md 4) in the base
+ * frame (docs/model.md 10: z_r = z_C - w0, so w0 leaves r_B and w~ = 0).
  *
  *   A(beta) = [[cos b, sin b], [-sin b, cos b]],  A'(beta) = [[0, 1], [-1, 0]] A(beta)
- *   r_P = (x_C, z_C) + A r_CP          (PCS: x_C := s~ L here)
+ *   r_P = (x_C, z_r) + A r_CP          (PCS: x_C := s~ L here)
  *   w, w' = dw/dx at x_P; alpha = atan w'; beyond [0, L] the beam is rigid: w = w' = 0
- *   r_B = (x_P, w0 + w) + zeta h/2 (-w', 1)
+ *   r_B = (x_P, w) + zeta h/2 (-w', 1)
  *   n = zeta (-sin a, cos a), t = zeta (-cos a, -sin a), C = [n^T; t^T]
  *   g = C (r_P - r_B)
  *   W^T, slider part:  C [I_2 | A' r_CP]
@@ -11,9 +12,10 @@
  *       dr_B/dq_k = (0, phi_k) + zeta h/2 [(-phi_k', 0) - (-w'^2, w') phi_k']
  *       (the published model: d alpha/dq ~ phi', the x_P dependence through
  *       x_C and beta neglected)
- *   w~ = -C (0, dw0)
- *   End stops (frictionless, restitution e_N): g = x_C - B/2 (left),
- *   g = L - B/2 - x_C (right); W = +-e_xC; w~ = 0. */
+ *   w~ = 0 (was -C (0, dw0) in the inertial frame of docs/model.md 4)
+ *   End stops (frictionless, restitution e_N): g = x_C - x_left (left),
+ *   g = x_right - x_C (right), x_left = B/2 or x_2 + B/2 beside a patch at the
+ *   left clamp, x_right = L - B/2 or x_1 - B/2 (docs/model.md 11); W = +-e_xC. */
 #include "ref_kinematics.h"
 
 #include <math.h>
@@ -23,8 +25,7 @@ double ref_kinematics_x(const ref_scene *scene, const double *q)
     return scene->model == REF_MODEL_PCS ? scene->s_pcs * scene->length : q[scene->i_x];
 }
 
-void ref_kinematics_corner(const ref_scene *scene, const ref_excitation *ex, const double *q, int i,
-                           ref_contact *c)
+void ref_kinematics_corner(const ref_scene *scene, const double *q, int i, ref_contact *c)
 {
     const double beta = q[scene->i_beta];
     const double cb = cos(beta), sb = sin(beta);
@@ -45,7 +46,7 @@ void ref_kinematics_corner(const ref_scene *scene, const ref_excitation *ex, con
     sa = sin(alpha);
     ca = cos(alpha);
     r_b[0] = r_p[0] - zeta * hh * w_x;
-    r_b[1] = ex->w0 + w + zeta * hh;
+    r_b[1] = w + zeta * hh;
     n[0] = -zeta * sa;
     n[1] = zeta * ca;
     t[0] = -zeta * ca;
@@ -75,35 +76,30 @@ void ref_kinematics_corner(const ref_scene *scene, const ref_excitation *ex, con
     c->dir[1][scene->i_x] = t[0];
     c->dir[1][scene->i_z] = t[1];
     c->dir[1][scene->i_beta] = t[0] * darot[0] + t[1] * darot[1];
-    c->w_tilde[0] = -n[1] * ex->w0_dot;
-    c->w_tilde[1] = -t[1] * ex->w0_dot;
 }
 
 void ref_kinematics_stop(const ref_scene *scene, const double *q, int id, ref_contact *c)
 {
     const double sign = id == REF_STOP_LEFT ? 1.0 : -1.0;
-    const double half_b = 0.5 * scene->slot_width;
     int k;
 
     c->id = id;
     c->dim = 1;
-    c->gap[0] = id == REF_STOP_LEFT ? q[scene->i_x] - half_b : scene->length - half_b - q[scene->i_x];
+    c->gap[0] = id == REF_STOP_LEFT ? q[scene->i_x] - scene->stop_left : scene->stop_right - q[scene->i_x];
     c->gap[1] = 0.0;
     for (k = 0; k < scene->n_q; ++k)
         c->dir[0][k] = c->dir[1][k] = 0.0;
     c->dir[0][scene->i_x] = sign;
-    c->w_tilde[0] = c->w_tilde[1] = 0.0;
     c->mu = 0.0;
     c->e_n = scene->e_n;
 }
 
-int ref_kinematics_closed(const ref_scene *scene, const ref_excitation *ex, const double *q_m,
-                          ref_contact out[REF_MAX_CONTACTS])
+int ref_kinematics_closed(const ref_scene *scene, const double *q_m, ref_contact out[REF_MAX_CONTACTS])
 {
     int count = 0, i;
 
     for (i = 0; i < REF_CORNERS; ++i) {
-        ref_kinematics_corner(scene, ex, q_m, i, &out[count]);
+        ref_kinematics_corner(scene, q_m, i, &out[count]);
         if (out[count].gap[0] < 0.0)
             ++count;
     }

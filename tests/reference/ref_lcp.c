@@ -1,4 +1,5 @@
-/* ref_lcp.c - the contact problem of one Moreau step (docs/model.md 4, 5).
+/* ref_lcp.c - the contact problem of one Moreau step (docs/model.md 4, 5;
+ * the rectifier's bridge of docs/model.md 11 is a 1-row unknown like an end stop).
  *
  *   xi = G P + c; per contact i (rows N, T):
  *     Signorini  0 <= P_N  _|_  xi_N >= 0
@@ -15,7 +16,8 @@
  *   giving K x = -E c with K = E G S (S: unknowns -> P, E: equation rows),
  *   solved in long double; the mode holds if the natural-map residual of
  *   P = S x vanishes (<= REF_LCP_ACCEPT relative). Two solutions give the
- *   same velocities iff dP^T G dP = 0 (G = W^T M^-1 W: kinetic metric).
+ *   same velocities iff dP^T G dP = 0 (G = W^T M^-1 W: kinetic metric; with
+ *   the bridge only G's symmetric part, still PSD, enters the quadratic form).
  *
  *   PGS: for each contact in order, xi_N from the current P, update P_N,
  *   then xi_T with the new P_N, update P_T; sweep until
@@ -162,7 +164,7 @@ int ref_lcp_enumerate(const ref_lcp *p, double *percussion, ref_mode *mode, int 
     static const double zero[REF_MAX_ROWS];
     double trial[REF_MAX_ROWS], best[REF_MAX_ROWS];
     double kept[REF_LCP_KEEP][REF_MAX_ROWS];
-    ref_mode current[REF_MAX_CONTACTS], best_mode[REF_MAX_CONTACTS];
+    ref_mode current[REF_MAX_UNILATERAL], best_mode[REF_MAX_UNILATERAL];
     double best_rel = HUGE_VAL, rel;
     long combos = 1, index;
     int n_kept = 0, i, r;
@@ -234,7 +236,7 @@ int ref_lcp_enumerate(const ref_lcp *p, double *percussion, ref_mode *mode, int 
 
 int ref_lcp_pgs(const ref_lcp *p, double *percussion, double tol_rel, long max_sweeps, ref_lcp_info *info)
 {
-    double step[REF_MAX_CONTACTS];
+    double step[REF_MAX_UNILATERAL];
     long sweep;
     int i;
 

@@ -1,11 +1,13 @@
-/* ref_lcp.h - the per-step contact problem of docs/model.md 4-5 and two solvers:
- * exact enumeration of contact modes and uncapped projected Gauss-Seidel. */
+/* ref_lcp.h - the per-step contact problem of docs/model.md 4-5 (with a
+ * rectifier also the bridge of docs/model.md 11, one more 1-row unknown) and
+ * two solvers: exact enumeration of modes and uncapped projected Gauss-Seidel. */
 #ifndef REF_LCP_H
 #define REF_LCP_H
 
 #include "ref_config.h"
 
-/* Contact modes; a 1-row contact (end stop) is TAKEOFF or STICK (closed). */
+/* Contact modes; a 1-row unknown (end stop, bridge) is TAKEOFF (open,
+ * blocking) or STICK (closed, conducting). */
 typedef enum ref_mode {
     REF_TAKEOFF = 0,   /* P = 0, xi_N >= 0 */
     REF_STICK = 1,     /* xi = 0, |P_T| <= mu P_N, P_N >= 0 */
@@ -13,15 +15,16 @@ typedef enum ref_mode {
     REF_SLIP_NEG = 3   /* xi_N = 0, xi_T < 0, P_T = +mu P_N */
 } ref_mode;
 
-/* xi = G P + c over n contacts; contact i owns rows row[i] (normal) and,
+/* xi = G P + c over n unknowns; unknown i owns rows row[i] (normal) and,
  * when dim[i] = 2, row[i] + 1 (tangential). */
 typedef struct ref_lcp {
     int n;
     int rows;
-    int dim[REF_MAX_CONTACTS];
-    int row[REF_MAX_CONTACTS];
-    double mu[REF_MAX_CONTACTS];
-    double g[REF_MAX_ROWS][REF_MAX_ROWS];   /* Delassus G = W^T M^-1 W, symmetric PSD */
+    int dim[REF_MAX_UNILATERAL];
+    int row[REF_MAX_UNILATERAL];
+    double mu[REF_MAX_UNILATERAL];
+    double g[REF_MAX_ROWS][REF_MAX_ROWS];   /* Delassus G = W^T M^-1 W, symmetric PSD; with the bridge
+                                               not symmetric, its symmetric part PSD (ref_step.c) */
     double c[REF_MAX_ROWS];
 } ref_lcp;
 

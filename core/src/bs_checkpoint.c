@@ -1,0 +1,331 @@
+/* bs_checkpoint.c - a sim's complete state in the caller's bytes, and back
+ * (docs/twin.md, "Checkpoints").
+ *
+ * Layout, every value in the machine's byte order, no padding:
+ *   u32 magic "BSCP", u32 format, u32 BS_BUILD_TAG, u32 BS_VERSION_NUMBER,
+ *   u32 bs_scene_hash, u32 BS_CHECKPOINT_SIZE,
+ *   u32 model, u32 report.active, sweeps, systems, converged,
+ *   u64 step, phase, phase_step_half,
+ *   bs_real x_pcs, excitation[2], step_accel, base_accel, q_beam[BS_MAX_MODES],
+ *     u_beam[BS_MAX_MODES], slider[3], slider_velocity[3], x_c_low,
+ *     percussion[BS_MAX_CONTACTS][BS_ROWS], report.residual,
+ *     2 x (shape cache centre, coef[BS_MAX_MODES][BS_SHAPE_TERMS]),
+ *     with the transducer: voltage, storage_voltage, power, energy, energy_low,
+ *   u32 FNV-1a checksum of every byte before it.
+ * The mode-shape caches are saved as they are, not expanded again, because a
+ * new expansion about another centre rounds differently and would break the
+ * bit-for-bit continuation. What bs_sim_init derives from the scene alone
+ * (shape reach, stretching rows, the patch's stiffness bound) is not saved.
+ */
+#include "beamslider.h"
+#include "bs_scene_fields.h"
+#include "bs_sim_internal.h"
+
+#define CHECKPOINT_MAGIC 0x50435342u /* "BSCP" read as a little-endian u32 */
+#define CHECKPOINT_FORMAT 1u
+#define FNV_OFFSET 2166136261u
+#define FNV_PRIME 16777619u
+
+static uint32_t fnv(uint32_t hash, const void *data, size_t size)
+{
+    const unsigned char *byte = (const unsigned char *)data;
+    size_t i;
+    for (i = 0; i < size; ++i) {
+        hash ^= byte[i];
+        hash *= FNV_PRIME;
+    }
+    return hash;
+}
+
+/* --- scene hash: every used element, through the field table ------------- */
+
+#define HASH_REAL(s, e) hash = fnv(hash, &(e), sizeof(bs_real))
+#define HASH_INT(s, e) hash = fnv(hash, &(e), sizeof(int))
+#define HASH_U64(s, e) hash = fnv(hash, &(e), sizeof(uint64_t))
+#define HASH_FIELD(kind, name, d1, d2, d3, rule, unit, meaning)                                   \
+    for (i = 0; i < BS_USED_##d1(scene); ++i)                                                     \
+        for (j = 0; j < BS_USED_##d2(scene); ++j)                                                 \
+            for (k = 0; k < BS_USED_##d3(scene); ++k)                                             \
+                HASH_##kind(scene, *(&scene->name BS_INDEX_##d1(i) BS_INDEX_##d2(j) BS_INDEX_##d3(k)));
+
+#define BS_INDEX_ONE(i)
+#define BS_INDEX_MODES(i) [i]
+#define BS_INDEX_PIECES(i) [i]
+#define BS_INDEX_COEFS(i) [i]
+#define BS_INDEX_CORNERS(i) [i]
+#define BS_INDEX_XZ(i) [i]
+
+uint32_t bs_scene_hash(const bs_scene *scene)
+{
+    uint32_t hash = FNV_OFFSET;
+    int i, j, k;
+    if (!scene)
+        return 0;
+    BS_SCENE_FIELDS(HASH_FIELD)
+    return hash;
+}
+
+/* --- byte cursor ----------------------------------------------------------- */
+
+typedef struct cursor {
+    unsigned char *out;      /* writing: the buffer; reading: NULL */
+    const unsigned char *in; /* reading: the buffer */
+    size_t at;
+} cursor;
+
+static void copy_bytes(unsigned char *to, const unsigned char *from, size_t size)
+{
+    size_t i;
+    for (i = 0; i < size; ++i)
+        to[i] = from[i];
+}
+
+/* Writes or reads size bytes at the cursor, as the cursor's direction says. */
+static void field(cursor *c, void *value, size_t size)
+{
+    if (c->out)
+        copy_bytes(c->out + c->at, (const unsigned char *)value, size);
+    else
+        copy_bytes((unsigned char *)value, c->in + c->at, size);
+    c->at += size;
+}
+
+static void reals(cursor *c, bs_real *values, int count)
+{
+    field(c, values, (size_t)count * sizeof(bs_real));
+}
+
+static void u32(cursor *c, uint32_t *value)
+{
+    field(c, value, sizeof *value);
+}
+
+/* What a checkpoint holds beyond its header (small: restore decodes into it
+ * on the stack, not into a copy of the whole sim with its solver scratch). */
+typedef struct saved_state {
+    uint32_t model, counts[4]; /* report.active, sweeps, systems, converged */
+    uint64_t step, phase, phase_step_half;
+    bs_real x_pcs, excitation[2], step_accel, base_accel;
+    bs_real q_beam[BS_MAX_MODES], u_beam[BS_MAX_MODES];
+    bs_real slider[3], slider_velocity[3], x_c_low;
+    bs_real percussion[BS_MAX_CONTACTS][BS_ROWS];
+    bs_real residual;
+    bs_shape_cache side[2];
+#if BS_WITH_PIEZO
+    bs_real piezo[5]; /* voltage, storage_voltage, power, energy, energy_low */
+#endif
+} saved_state;
+
+/* The state part, in the layout above, between a saved_state and the cursor. */
+static void state(cursor *c, saved_state *s)
+{
+    int side;
+    u32(c, &s->model);
+    field(c, s->counts, sizeof s->counts);
+    field(c, &s->step, sizeof s->step);
+    field(c, &s->phase, sizeof s->phase);
+    field(c, &s->phase_step_half, sizeof s->phase_step_half);
+    reals(c, &s->x_pcs, 1);
+    reals(c, s->excitation, 2);
+    reals(c, &s->step_accel, 1);
+    reals(c, &s->base_accel, 1);
+    reals(c, s->q_beam, BS_MAX_MODES);
+    reals(c, s->u_beam, BS_MAX_MODES);
+    reals(c, s->slider, 3);
+    reals(c, s->slider_velocity, 3);
+    reals(c, &s->x_c_low, 1);
+    reals(c, &s->percussion[0][0], BS_MAX_CONTACTS * BS_ROWS);
+    reals(c, &s->residual, 1);
+    for (side = 0; side < 2; ++side) {
+        reals(c, &s->side[side].centre, 1);
+        reals(c, &s->side[side].coef[0][0], BS_MAX_MODES * BS_SHAPE_TERMS);
+    }
+#if BS_WITH_PIEZO
+    reals(c, s->piezo, 5);
+#endif
+}
+
+static void copy_reals(bs_real *to, const bs_real *from, int count)
+{
+    int k;
+    for (k = 0; k < count; ++k)
+        to[k] = from[k];
+}
+
+/* Element by element: a struct assignment may become a call of memcpy,
+ * which the freestanding core does not have (tests/check_core_symbols.sh). */
+static void copy_cache(bs_shape_cache *to, const bs_shape_cache *from)
+{
+    to->centre = from->centre;
+    copy_reals(&to->coef[0][0], &from->coef[0][0], BS_MAX_MODES * BS_SHAPE_TERMS);
+}
+
+static void save_state(const bs_sim *sim, saved_state *s)
+{
+    s->model = (uint32_t)sim->model;
+    s->counts[0] = sim->report.active;
+    s->counts[1] = (uint32_t)sim->report.sweeps; /* ints pass as u32: int's size does not matter */
+    s->counts[2] = (uint32_t)sim->report.systems;
+    s->counts[3] = (uint32_t)sim->report.converged;
+    s->step = sim->step;
+    s->phase = sim->phase;
+    s->phase_step_half = sim->phase_step_half;
+    s->x_pcs = sim->x_pcs;
+    copy_reals(s->excitation, sim->excitation, 2);
+    s->step_accel = sim->step_accel;
+    s->base_accel = sim->base_accel;
+    copy_reals(s->q_beam, sim->q_beam, BS_MAX_MODES);
+    copy_reals(s->u_beam, sim->u_beam, BS_MAX_MODES);
+    copy_reals(s->slider, sim->slider, 3);
+    copy_reals(s->slider_velocity, sim->slider_velocity, 3);
+    s->x_c_low = sim->x_c_low;
+    copy_reals(&s->percussion[0][0], &sim->percussion[0][0], BS_MAX_CONTACTS * BS_ROWS);
+    s->residual = sim->report.residual;
+    copy_cache(&s->side[0], &sim->side[0]);
+    copy_cache(&s->side[1], &sim->side[1]);
+#if BS_WITH_PIEZO
+    s->piezo[0] = sim->voltage;
+    s->piezo[1] = sim->storage_voltage;
+    s->piezo[2] = sim->power;
+    s->piezo[3] = sim->energy;
+    s->piezo[4] = sim->energy_low;
+#endif
+}
+
+static void load_state(bs_sim *sim, const saved_state *s)
+{
+    sim->report.active = s->counts[0];
+    sim->report.sweeps = (int)s->counts[1];
+    sim->report.systems = (int)s->counts[2];
+    sim->report.converged = (int)s->counts[3];
+    sim->report.residual = s->residual;
+    sim->step = s->step;
+    sim->phase = s->phase;
+    sim->phase_step_half = s->phase_step_half;
+    sim->x_pcs = s->x_pcs;
+    copy_reals(sim->excitation, s->excitation, 2);
+    sim->step_accel = s->step_accel;
+    sim->base_accel = s->base_accel;
+    copy_reals(sim->q_beam, s->q_beam, BS_MAX_MODES);
+    copy_reals(sim->u_beam, s->u_beam, BS_MAX_MODES);
+    copy_reals(sim->slider, s->slider, 3);
+    copy_reals(sim->slider_velocity, s->slider_velocity, 3);
+    sim->x_c_low = s->x_c_low;
+    copy_reals(&sim->percussion[0][0], &s->percussion[0][0], BS_MAX_CONTACTS * BS_ROWS);
+    copy_cache(&sim->side[0], &s->side[0]);
+    copy_cache(&sim->side[1], &s->side[1]);
+#if BS_WITH_PIEZO
+    sim->voltage = s->piezo[0];
+    sim->storage_voltage = s->piezo[1];
+    sim->power = s->piezo[2];
+    sim->energy = s->piezo[3];
+    sim->energy_low = s->piezo[4];
+#endif
+    sim->contacts.count = 0; /* scratch of a step under way: none between steps */
+}
+
+static void header(cursor *c, uint32_t words[6])
+{
+    field(c, words, 6 * sizeof words[0]);
+}
+
+bs_status bs_sim_save(const bs_sim *sim, void *buffer, size_t size)
+{
+    const bs_status status = bs_sim_status(sim);
+    uint32_t words[6], checksum;
+    saved_state s;
+    cursor c;
+
+    if (status != BS_OK)
+        return status;
+    if (!buffer)
+        return BS_E_NULL;
+    if (size < BS_CHECKPOINT_SIZE)
+        return BS_E_CHECKPOINT_SIZE;
+    words[0] = CHECKPOINT_MAGIC;
+    words[1] = CHECKPOINT_FORMAT;
+    words[2] = BS_BUILD_TAG;
+    words[3] = BS_VERSION_NUMBER;
+    words[4] = bs_scene_hash(sim->scene);
+    words[5] = (uint32_t)BS_CHECKPOINT_SIZE;
+    save_state(sim, &s);
+    c.out = (unsigned char *)buffer;
+    c.in = 0;
+    c.at = 0;
+    header(&c, words);
+    state(&c, &s);
+    checksum = fnv(FNV_OFFSET, buffer, c.at);
+    u32(&c, &checksum);
+    return BS_OK;
+}
+
+static int finite(const bs_real *values, int count)
+{
+    int k;
+    for (k = 0; k < count; ++k)
+        if (values[k] - values[k] != BS_R(0.0))
+            return 0;
+    return 1;
+}
+
+/* A decoded state the sim can take: the model it was initialised with, every
+ * value finite, x_C in the band bs_sim_set_state accepts (the step never
+ * ends outside it), the shape caches empty (centre < 0) or on the beam. */
+static int acceptable(const bs_sim *sim, const saved_state *s)
+{
+    int side;
+    if (s->model != (uint32_t)sim->model || s->counts[0] >= (1u << BS_MAX_CONTACTS))
+        return 0;
+    if (!finite(&s->x_pcs, 1) || !finite(s->excitation, 2) || !finite(&s->step_accel, 1)
+        || !finite(&s->base_accel, 1) || !finite(s->q_beam, BS_MAX_MODES) || !finite(s->u_beam, BS_MAX_MODES)
+        || !finite(s->slider, 3) || !finite(s->slider_velocity, 3) || !finite(&s->x_c_low, 1)
+        || !finite(&s->percussion[0][0], BS_MAX_CONTACTS * BS_ROWS))
+        return 0;
+    for (side = 0; side < 2; ++side)
+        if (!finite(&s->side[side].centre, 1) || s->side[side].centre > sim->scene->length
+            || !finite(&s->side[side].coef[0][0], BS_MAX_MODES * BS_SHAPE_TERMS))
+            return 0;
+#if BS_WITH_PIEZO
+    if (!finite(s->piezo, 5))
+        return 0;
+#endif
+    return sim->model != BS_MODEL_FREE || bs_within_stops(sim->scene, s->slider[0]);
+}
+
+bs_status bs_sim_restore(bs_sim *sim, const void *buffer, size_t size)
+{
+    const bs_status status = bs_sim_status(sim);
+    const size_t body = BS_CHECKPOINT_SIZE - sizeof(uint32_t);
+    uint32_t words[6], checksum;
+    saved_state s;
+    cursor c;
+
+    if (status != BS_OK)
+        return status;
+    if (!buffer)
+        return BS_E_NULL;
+    if (size < sizeof words)
+        return BS_E_CHECKPOINT_SIZE;
+    c.out = 0;
+    c.in = (const unsigned char *)buffer;
+    c.at = 0;
+    header(&c, words);
+    if (words[0] != CHECKPOINT_MAGIC)
+        return BS_E_CHECKPOINT_DAMAGED; /* not a checkpoint, or another byte order */
+    if (words[1] != CHECKPOINT_FORMAT || words[2] != BS_BUILD_TAG || words[3] != BS_VERSION_NUMBER)
+        return BS_E_CHECKPOINT_BUILD;
+    if (words[5] != (uint32_t)BS_CHECKPOINT_SIZE || size < BS_CHECKPOINT_SIZE)
+        return BS_E_CHECKPOINT_SIZE;
+    c.at = body;
+    u32(&c, &checksum);
+    if (fnv(FNV_OFFSET, buffer, body) != checksum)
+        return BS_E_CHECKPOINT_DAMAGED;
+    if (words[4] != bs_scene_hash(sim->scene))
+        return BS_E_CHECKPOINT_SCENE;
+    c.at = sizeof words;
+    state(&c, &s);
+    if (!acceptable(sim, &s))
+        return BS_E_CHECKPOINT_SCENE;
+    load_state(sim, &s);
+    return BS_OK;
+}

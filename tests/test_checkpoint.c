@@ -1,0 +1,256 @@
+/* test_checkpoint.c - checkpoints (core/src/bs_checkpoint.c): a restored sim
+ * continues bit for bit like the one saved, with contacts under way, a
+ * changed excitation, a measured input and a transducer; a checkpoint of
+ * another size, build, scene or model, or a damaged one, is refused with its
+ * own status and changes nothing; the states the step produces at a clamp
+ * stop are restorable. */
+#include "support.h"
+
+#include <string.h>
+
+static scene_file file;
+static bs_scene scene, resistor_scene, other_scene;
+static scene_model model;
+static bs_sim sim, copy;
+static unsigned char buffer[BS_CHECKPOINT_SIZE + 16];
+
+/* FNV-1a, as the checkpoint's trailer: lets a test forge a checkpoint whose
+ * checksum holds, so that the check behind it is the one exercised. */
+static uint32_t fnv(const unsigned char *bytes, size_t size)
+{
+    uint32_t hash = 2166136261u;
+    size_t i;
+    for (i = 0; i < size; ++i) {
+        hash ^= bytes[i];
+        hash *= 16777619u;
+    }
+    return hash;
+}
+
+static void reseal(unsigned char *bytes)
+{
+    const uint32_t checksum = fnv(bytes, BS_CHECKPOINT_SIZE - 4);
+    memcpy(bytes + BS_CHECKPOINT_SIZE - 4, &checksum, 4);
+}
+
+static void run(bs_sim *s, long steps)
+{
+    long k;
+    for (k = 0; k < steps; ++k)
+        assert_int_equal(bs_sim_step(s), BS_OK);
+}
+
+/* Saves sim after `before` steps, runs it `after` more, then restores the
+ * checkpoint into a fresh sim of the same scene and runs that `after`
+ * steps: both must agree bit for bit at every check. */
+static void check_continuation(const bs_scene *sc, long before, long after)
+{
+    long k;
+    assert_int_equal(bs_sim_init(&sim, sc, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    run(&sim, before);
+    assert_int_equal(bs_sim_save(&sim, buffer, sizeof buffer), BS_OK);
+    assert_int_equal(bs_sim_init(&copy, sc, BS_MODEL_FREE, BS_R(0.7)), BS_OK);
+    assert_int_equal(bs_sim_restore(&copy, buffer, sizeof buffer), BS_OK);
+    assert_int_equal(bs_sim_hash(&copy), bs_sim_hash(&sim));
+    assert_true(bs_sim_steps(&copy) == bs_sim_steps(&sim));
+    for (k = 0; k < after; ++k) {
+        assert_int_equal(bs_sim_step(&sim), BS_OK);
+        assert_int_equal(bs_sim_step(&copy), BS_OK);
+        if (k % 500 == 499)
+            assert_int_equal(bs_sim_hash(&copy), bs_sim_hash(&sim));
+    }
+    assert_true(bs_sim_position(&copy) == bs_sim_position(&sim));
+    assert_true(bs_sim_sensor(&copy) == bs_sim_sensor(&sim));
+}
+
+/* fig6 after 0.5 s: the slider is in contact most steps, the warm start and
+ * the shape caches are in use, x_C has a compensated part. */
+static void test_restored_run_continues_bit_for_bit(void **state)
+{
+    bs_step_report a, b;
+    (void)state;
+    check_continuation(&scene, 25000, 10000);
+    assert_int_equal(bs_sim_get_report(&sim, &a), BS_OK);
+    assert_int_equal(bs_sim_get_report(&copy, &b), BS_OK);
+    assert_true(a.active == b.active && a.sweeps == b.sweeps && a.residual == b.residual);
+}
+
+/* The transducer's voltage and energy are state too. */
+static void test_transducer_state_is_restored(void **state)
+{
+    bs_transducer_output a, b;
+    (void)state;
+    check_continuation(&resistor_scene, 20000, 5000);
+    assert_int_equal(bs_sim_get_transducer(&sim, &a), BS_OK);
+    assert_int_equal(bs_sim_get_transducer(&copy, &b), BS_OK);
+    assert_true(a.present == 1 && a.voltage != BS_R(0.0));
+    assert_true(a.voltage == b.voltage && a.energy == b.energy && a.power == b.power);
+}
+
+/* The excitation as set at run time (frequency, amplitude, phase) and the
+ * measured input's last value come back; so does a run on measured input. */
+static void test_excitation_settings_are_restored(void **state)
+{
+    bs_real f, a;
+    long k;
+    (void)state;
+    assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    run(&sim, 3000);
+    assert_int_equal(bs_sim_set_excitation(&sim, BS_R(117.25), BS_R(3.5)), BS_OK);
+    run(&sim, 777);
+    assert_int_equal(bs_sim_step_measured(&sim, BS_R(-2.5)), BS_OK);
+    assert_int_equal(bs_sim_save(&sim, buffer, BS_CHECKPOINT_SIZE), BS_OK);
+    assert_int_equal(bs_sim_init(&copy, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    assert_int_equal(bs_sim_restore(&copy, buffer, BS_CHECKPOINT_SIZE), BS_OK);
+    assert_int_equal(bs_sim_get_excitation(&copy, &f, &a), BS_OK);
+    assert_true(f == BS_R(117.25) && a == BS_R(3.5));
+    assert_true(bs_sim_phase(&copy) == bs_sim_phase(&sim));
+    assert_true(bs_sim_base_acceleration(&copy) == BS_R(-2.5));
+    for (k = 0; k < 2000; ++k) {
+        const bs_real input = (bs_real)(k % 7) - BS_R(3.0);
+        assert_int_equal(bs_sim_step_measured(&sim, input), BS_OK);
+        assert_int_equal(bs_sim_step_measured(&copy, input), BS_OK);
+    }
+    run(&sim, 1000);
+    run(&copy, 1000);
+    assert_int_equal(bs_sim_hash(&copy), bs_sim_hash(&sim));
+}
+
+/* Every refusal leaves the target as it was (its hash and its step count). */
+static void expect_refused(const unsigned char *bytes, size_t size, bs_status want)
+{
+    const uint32_t hash = bs_sim_hash(&copy);
+    const uint64_t steps = bs_sim_steps(&copy);
+    assert_int_equal(bs_sim_restore(&copy, bytes, size), want);
+    assert_int_equal(bs_sim_hash(&copy), hash);
+    assert_true(bs_sim_steps(&copy) == steps);
+}
+
+static void test_bad_checkpoints_are_refused_and_change_nothing(void **state)
+{
+    unsigned char forged[sizeof buffer];
+    uint32_t word;
+    bs_real nan = BS_R(0.0);
+    size_t at;
+    (void)state;
+    assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    run(&sim, 2000);
+    assert_int_equal(bs_sim_save(&sim, buffer, BS_CHECKPOINT_SIZE - 1), BS_E_CHECKPOINT_SIZE);
+    assert_int_equal(bs_sim_save(&sim, NULL, BS_CHECKPOINT_SIZE), BS_E_NULL);
+    assert_int_equal(bs_sim_save(&sim, buffer, BS_CHECKPOINT_SIZE), BS_OK);
+    assert_int_equal(bs_sim_init(&copy, &scene, BS_MODEL_FREE, BS_R(0.6)), BS_OK);
+    run(&copy, 10);
+
+    expect_refused(buffer, BS_CHECKPOINT_SIZE - 1, BS_E_CHECKPOINT_SIZE); /* truncated */
+    expect_refused(buffer, 3, BS_E_CHECKPOINT_SIZE);
+    assert_int_equal(bs_sim_restore(&copy, NULL, BS_CHECKPOINT_SIZE), BS_E_NULL);
+
+    memcpy(forged, buffer, sizeof forged); /* another byte order, or not a checkpoint */
+    forged[0] ^= 0xffu;
+    expect_refused(forged, BS_CHECKPOINT_SIZE, BS_E_CHECKPOINT_DAMAGED);
+    memcpy(forged, buffer, sizeof forged); /* one bit of the state flipped */
+    forged[BS_CHECKPOINT_SIZE / 2] ^= 0x10u;
+    expect_refused(forged, BS_CHECKPOINT_SIZE, BS_E_CHECKPOINT_DAMAGED);
+
+    memcpy(forged, buffer, sizeof forged); /* another build: precision, switches or modes */
+    memcpy(&word, forged + 8, 4);
+    word ^= 1u << 15;
+    memcpy(forged + 8, &word, 4);
+    reseal(forged);
+    expect_refused(forged, BS_CHECKPOINT_SIZE, BS_E_CHECKPOINT_BUILD);
+    memcpy(forged, buffer, sizeof forged); /* another version */
+    memcpy(&word, forged + 12, 4);
+    word += 1;
+    memcpy(forged + 12, &word, 4);
+    reseal(forged);
+    expect_refused(forged, BS_CHECKPOINT_SIZE, BS_E_CHECKPOINT_BUILD);
+    memcpy(forged, buffer, sizeof forged); /* a checkpoint that records another size */
+    memcpy(&word, forged + 20, 4);
+    word += 8;
+    memcpy(forged + 20, &word, 4);
+    reseal(forged);
+    expect_refused(forged, BS_CHECKPOINT_SIZE, BS_E_CHECKPOINT_SIZE);
+
+    /* a state no step produces: x_C = NaN behind a valid checksum */
+    at = 6 * 4 + 5 * 4 + 3 * 8 + (5 + 2 * BS_MAX_MODES) * sizeof(bs_real);
+    nan = nan / nan;
+    memcpy(forged, buffer, sizeof forged);
+    memcpy(forged + at, &nan, sizeof nan);
+    reseal(forged);
+    expect_refused(forged, BS_CHECKPOINT_SIZE, BS_E_CHECKPOINT_SCENE);
+
+    /* another scene (one friction coefficient apart), another model */
+    assert_int_equal(bs_sim_init(&copy, &other_scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    expect_refused(buffer, BS_CHECKPOINT_SIZE, BS_E_CHECKPOINT_SCENE);
+    assert_int_equal(bs_sim_init(&copy, &scene, BS_MODEL_PCS, BS_R(0.3)), BS_OK);
+    expect_refused(buffer, BS_CHECKPOINT_SIZE, BS_E_CHECKPOINT_SCENE);
+
+    /* the untouched checkpoint still restores, into a larger buffer too */
+    assert_int_equal(bs_sim_init(&copy, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    assert_int_equal(bs_sim_restore(&copy, buffer, sizeof buffer), BS_OK);
+    assert_int_equal(bs_sim_hash(&copy), bs_sim_hash(&sim));
+}
+
+/* The slider driven hard into the left clamp stop ends its steps a hair
+ * beyond it (Moreau's step penetrates by about |u| dt): such a state must
+ * save and restore, and continue identically. */
+static void test_state_beyond_a_clamp_stop_restores(void **state)
+{
+    bs_real slider[3], velocity[3] = {BS_R(-2.0), BS_R(0.0), BS_R(0.0)};
+    int beyond = 0;
+    long k;
+    (void)state;
+    assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    assert_int_equal(bs_sim_get_state(&sim, NULL, NULL, slider, NULL), BS_OK);
+    slider[0] = scene.stop_min + BS_R(3e-6); /* x_M = stop - 17 um: the impact ends the step beyond it */
+    assert_int_equal(bs_sim_set_state(&sim, NULL, NULL, slider, velocity), BS_OK);
+    for (k = 0; k < 20 && !beyond; ++k) {
+        assert_int_equal(bs_sim_step(&sim), BS_OK);
+        assert_int_equal(bs_sim_get_state(&sim, NULL, NULL, slider, NULL), BS_OK);
+        beyond = slider[0] < scene.stop_min;
+    }
+    print_message("%s: x_C - stop_min = %.3e m after %ld steps\n", BS_REAL_NAME,
+                  (double)(slider[0] - scene.stop_min), k);
+    assert_true(beyond);
+    assert_int_equal(bs_sim_save(&sim, buffer, BS_CHECKPOINT_SIZE), BS_OK);
+    assert_int_equal(bs_sim_init(&copy, &scene, BS_MODEL_FREE, BS_R(0.5)), BS_OK);
+    assert_int_equal(bs_sim_restore(&copy, buffer, BS_CHECKPOINT_SIZE), BS_OK);
+    run(&sim, 500);
+    run(&copy, 500);
+    assert_int_equal(bs_sim_hash(&copy), bs_sim_hash(&sim));
+}
+
+static void test_scene_hash_tells_scenes_apart(void **state)
+{
+    (void)state;
+    assert_true(bs_scene_hash(&scene) != bs_scene_hash(&other_scene));
+    assert_true(bs_scene_hash(&scene) != bs_scene_hash(&resistor_scene));
+    assert_true(bs_scene_hash(&scene) == bs_scene_hash(&scene));
+    assert_true(bs_scene_hash(NULL) == 0);
+}
+
+static int setup(void **state)
+{
+    (void)state;
+    support_load("configs/fig6.ini", &file, &scene, &model);
+    file.params.load = SCENE_LOAD_RESISTOR;
+    support_build(&file, &resistor_scene, &model);
+    file.params.load = SCENE_LOAD_NONE;
+    file.params.mu *= 1.25;
+    support_build(&file, &other_scene, &model);
+    file.params.mu /= 1.25;
+    return 0;
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_restored_run_continues_bit_for_bit),
+        cmocka_unit_test(test_transducer_state_is_restored),
+        cmocka_unit_test(test_excitation_settings_are_restored),
+        cmocka_unit_test(test_bad_checkpoints_are_refused_and_change_nothing),
+        cmocka_unit_test(test_state_beyond_a_clamp_stop_restores),
+        cmocka_unit_test(test_scene_hash_tells_scenes_apart),
+    };
+    return cmocka_run_group_tests(tests, setup, NULL);
+}
