@@ -14,6 +14,9 @@ int cli_gen(int argc, char **argv);
 int cli_sweep(int argc, char **argv);
 int cli_run(int argc, char **argv);
 int cli_fields(int argc, char **argv);
+int cli_twin(int argc, char **argv);
+int cli_twin_plant_command(int argc, char **argv);
+int cli_twin_gains_command(int argc, char **argv);
 
 /* Prints "beamslider: error: ..." to stderr. */
 void cli_error(const char *format, ...);

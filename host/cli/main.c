@@ -18,6 +18,13 @@ static const char usage[] =
     "                [--out FILE.csv] [--every N] [--periods FILE.csv]\n"
     "                         simulate; CSV rows every N steps, one row per excitation\n"
     "                         period with --periods, JSON summary on stdout\n"
+    "  twin SCENE.ini --measured FILE.csv --out EST.csv [--signal deflection|voltage]\n"
+    "                [--latency S] [--noise SIGMA] ...\n"
+    "                         the twin corrected from measured signals (beamslider twin --help)\n"
+    "  twin-plant SCENE.ini --out FILE.csv [--snr DB] [--freq-scale X] ...\n"
+    "                         a measured-signals file from a (perturbed) plant\n"
+    "  twin-gains SCENE.ini --noise SIGMA [...]\n"
+    "                         the observer's constants as a C header\n"
     "  fields                 the reference of every scene field (Markdown; docs/fields.md)\n"
     "  --version              version, source revision and precision\n"
     "core precision: " BS_REAL_NAME "\n";
@@ -55,6 +62,12 @@ int main(int argc, char **argv)
         return finish(cli_gen(argc - 2, argv + 2));
     if (argc >= 2 && !strcmp(argv[1], "sweep"))
         return finish(cli_sweep(argc - 2, argv + 2));
+    if (argc >= 2 && !strcmp(argv[1], "twin"))
+        return finish(cli_twin(argc - 2, argv + 2));
+    if (argc >= 2 && !strcmp(argv[1], "twin-plant"))
+        return finish(cli_twin_plant_command(argc - 2, argv + 2));
+    if (argc >= 2 && !strcmp(argv[1], "twin-gains"))
+        return finish(cli_twin_gains_command(argc - 2, argv + 2));
     if (argc >= 2 && !strcmp(argv[1], "fields"))
         return finish(cli_fields(argc - 2, argv + 2));
     if (argc == 2 && !strcmp(argv[1], "--version")) {

@@ -1,0 +1,178 @@
+/* bs_observer.h - the digital twin's observer: a bs_sim corrected from
+ * measurements of the real harvester (docs/twin.md, "Observer";
+ * docs/model.md 10).
+ *
+ * Per step the caller gives the mean base acceleration a_k [m/s^2] (what
+ * drives the twin, bs_sim_step_measured) and one beam signal y_k: the
+ * deflection w(4L/7) [m] of a laser or strain gauge, or the transducer's
+ * patch voltage v [V]. The observer steps the twin and then
+ *
+ *   1. corrects its beam state by output injection, q += L_q e, u += L_u e
+ *      (v += L_v e), e = y_k - y^ with y^ the twin's own signal delayed by
+ *      the stated latency, and carries the slider along; the gains L are
+ *      steady-state Kalman gains of the beam with the slider attached at the
+ *      twin's s, designed on the host (host/lib/observer_design.c);
+ *   2. corrects the slider position s = x_C / L, which nobody measures, from
+ *      how the beam responds: the measured signal is demodulated against a_k
+ *      (a lock-in), and the response magnitude |H| is located on a map of
+ *      the scene's own response against s (host-made, both branches); a
+ *      slow, rate-limited integral action moves x_C toward it.
+ *
+ * Like bs_sim, a bs_observer is a caller-owned struct of compile-time size
+ * (`static bs_observer obs;`) whose members are private; read it through
+ * bs_observer_get. It holds a pointer to its gains, which must outlive it.
+ */
+#ifndef BS_OBSERVER_H
+#define BS_OBSERVER_H
+
+#include "beamslider.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Longest latency of the beam signal behind the base acceleration [steps]. */
+#ifndef BS_OBSERVER_MAX_LATENCY
+#define BS_OBSERVER_MAX_LATENCY 256
+#endif
+
+/* Points of the gain schedule (the Kalman gains against s). */
+#define BS_OBSERVER_GAINS 24
+
+/* Points of the response map (the first-harmonic response against s). */
+#define BS_OBSERVER_TABLE 48
+
+/* What the measured beam signal is. */
+typedef enum bs_observer_signal {
+    BS_SIGNAL_DEFLECTION = 0, /* w(4L/7) [m], no base motion (bs_sim_sensor) */
+    BS_SIGNAL_VOLTAGE = 1     /* patch voltage v [V] (bs_sim_get_transducer; resistor load) */
+} bs_observer_signal;
+
+/* The observer's constants, designed on the host for one scene, signal chain
+ * and noise (host/lib/observer_design.c; `beamslider twin-gains` prints them
+ * as a C header). */
+typedef struct bs_observer_gains {
+    int n_modes;                        /* the scene's mode count */
+    int signal;                         /* bs_observer_signal */
+    int latency;                        /* the signal lags a_k by this many steps, 0 .. BS_OBSERVER_MAX_LATENCY */
+    bs_real noise;                      /* measurement noise standard deviation [m or V], > 0 */
+    int gain_count;                     /* points of the gain schedule, 2 .. BS_OBSERVER_GAINS */
+    bs_real gain_s[BS_OBSERVER_GAINS];  /* s, ascending, within the clamp stops / L */
+    bs_real gain_q[BS_OBSERVER_GAINS][BS_MAX_MODES]; /* L_q = Phi^latency K at gain_s: modal
+                                                        displacement per unit of e */
+    bs_real gain_u[BS_OBSERVER_GAINS][BS_MAX_MODES]; /* L_u: modal velocity per unit of e */
+    bs_real gain_v[BS_OBSERVER_GAINS];  /* L_v: patch voltage per unit of e (0 without a transducer) */
+    int table_count;                    /* points of the response map, 2 .. BS_OBSERVER_TABLE */
+    bs_real table_frequency;            /* the excitation the map was made at: f_ex [Hz] */
+    bs_real table_accel;                /* and its amplitude a [m/s^2] */
+    bs_real table_s[BS_OBSERVER_TABLE];     /* s, ascending, within [stop_min / L, 1/2] */
+    bs_real table_stiff[BS_OBSERVER_TABLE]; /* |H| [signal unit per m/s^2] of the branch below its
+                                               resonance (Re H < 0: the low-amplitude branch near
+                                               the clamp and the hardened high branch), from a
+                                               PCS sweep from the clamp toward the centre */
+    bs_real table_soft[BS_OBSERVER_TABLE];  /* |H| of the branch above it (Re H > 0: the
+                                               low-amplitude branch toward the centre), from a PCS
+                                               sweep from the centre toward the clamp; in either,
+                                               a negative value: no such branch at that s */
+} bs_observer_gains;
+
+/* Run-time settings (bs_observer_defaults). */
+typedef struct bs_observer_options {
+    int correct_beam;        /* 1: output injection on the beam state; 0: none (open loop) */
+    int correct_position;    /* 1: the s correction; 0: none */
+    bs_real lockin_time;     /* time constant of each of the lock-in's two low-pass stages [s], > 0 */
+    bs_real position_gain;   /* part of the estimated s error corrected per second [1/s], >= 0 */
+    bs_real position_rate;   /* largest correction speed |ds/dt| [1/s], >= 0 */
+    bs_real position_deadband; /* s errors up to this are left to the twin's own dynamics [1], >= 0:
+                                  the response map's uncertainty (a model off by 3 % in frequency
+                                  moves it by ~0.01) */
+    bs_real sigma_hold;      /* no s correction while s_sigma exceeds this [1], > 0 */
+    bs_real excitation_tolerance; /* the map is used only while the measured excitation is within
+                                     this relative distance of the map's (frequency: a tenth of
+                                     it), > 0 */
+    bs_real settle_time;     /* no s correction during the first settle_time [s] (the lock-in
+                                filling), >= 0 */
+} bs_observer_options;
+
+/* Defaults (tuned on fig6, docs/twin.md): both corrections, lock-in 0.1 s,
+ * gain 1 /s, rate 0.05 /s, deadband 0.004, hold above s_sigma 0.02,
+ * excitation within 10 % (frequency 1 %), settle 0.5 s. */
+#define BS_OBSERVER_DEFAULT_LOCKIN_TIME 0.1
+#define BS_OBSERVER_DEFAULT_POSITION_GAIN 1.0
+#define BS_OBSERVER_DEFAULT_EXCITATION_TOLERANCE 0.1
+#define BS_OBSERVER_DEFAULT_POSITION_RATE 0.05
+#define BS_OBSERVER_DEFAULT_POSITION_DEADBAND 0.004
+#define BS_OBSERVER_DEFAULT_SIGMA_HOLD 0.02
+#define BS_OBSERVER_DEFAULT_SETTLE_TIME 0.5
+
+/* What the observer knows after a step (bs_observer_get). */
+typedef struct bs_observer_estimate {
+    bs_real s;              /* the twin's slider position x_C / L */
+    bs_real s_sigma;        /* standard deviation of s [1]: large where the response is tiny */
+    bs_real s_error;        /* the latest estimate of s_plant - s_twin, before rate limits */
+    bs_real amplitude;      /* first-harmonic amplitude of the twin's w(4L/7) [m] */
+    bs_real power;          /* mean power into the transducer's load [W] (0 without one) */
+    bs_real phase_error;    /* arg(H_measured / H_twin) at the excitation [rad] */
+    bs_real frequency;      /* the excitation frequency found in a_k [Hz] (0 before it is known) */
+    bs_real measurement;    /* y_k as given */
+    bs_real prediction;     /* y^_k, the twin's signal it was compared with */
+    bs_real innovation;     /* e = y_k - y^_k */
+} bs_observer_estimate;
+
+/* The lock-in's two low-pass stages of one product. */
+typedef struct bs_lowpass2 {
+    bs_real stage[2];
+} bs_lowpass2;
+
+/* PRIVATE members (core/src/bs_observer.c). */
+typedef struct bs_observer {
+    uint32_t ready;
+    const bs_observer_gains *gains;
+    bs_observer_options options;
+    uint64_t steps;
+    int head;                                         /* ring index of the newest entry */
+    bs_real past_signal[BS_OBSERVER_MAX_LATENCY + 1]; /* the twin's signal, newest at head */
+    bs_real past_accel[BS_OBSERVER_MAX_LATENCY + 1];  /* a_k, aligned with it */
+    bs_real past_deflection[BS_OBSERVER_MAX_LATENCY + 1]; /* the twin's w(4L/7), aligned with it */
+    bs_real quadrature;                               /* leaky integral of the aligned a_k [m/s] */
+    bs_lowpass2 ref_aa, ref_bb, ref_b;                /* <a^2>, <b^2>, <b> */
+    bs_lowpass2 meas_a, meas_b;                       /* <y a>, <y b> */
+    bs_lowpass2 twin_a, twin_b;                       /* <y^ a>, <y^ b> */
+    bs_lowpass2 defl_a, defl_b;                       /* <w a>, <w b>: the twin's w(4L/7) */
+    bs_lowpass2 innov_sq;                             /* <e^2> */
+    bs_lowpass2 power;                                /* <p> */
+    bs_lowpass2 s_error_mean, s_error_sq;             /* of the raw s error */
+    bs_observer_estimate estimate;
+} bs_observer;
+
+/* The default options. */
+bs_observer_options bs_observer_defaults(void);
+
+/* Starts observing the twin sim (initialised, free model, the scene the
+ * gains were designed for: its mode count, and a transducer with a resistor
+ * load for BS_SIGNAL_VOLTAGE); options NULL: the defaults. The sim's state
+ * is the initial estimate (start it on the known side of the beam: s and
+ * 1 - s respond alike). Returns BS_OK, BS_E_NULL, BS_E_UNINITIALISED (sim)
+ * or BS_E_ARGUMENT (gains or options out of range, a PCS sim, gains of
+ * another scene); after an error the observer is not initialised. */
+bs_status bs_observer_init(bs_observer *obs, const bs_sim *sim, const bs_observer_gains *gains,
+                           const bs_observer_options *options);
+
+/* One step: advances sim by bs_sim_step_measured(sim, base_accel), then
+ * corrects it with the measurement y_k (units of gains->signal). A
+ * base_accel or measurement that is not finite is refused with
+ * BS_E_ARGUMENT and nothing changes; a failed twin step returns its status
+ * (the sim keeps its last good state, the observer is unchanged). Returns
+ * BS_OK, BS_E_NULL, BS_E_UNINITIALISED, BS_E_ARGUMENT or a status of
+ * bs_sim_step. */
+bs_status bs_observer_step(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_real measurement);
+
+/* Copies the latest estimate into *estimate. Returns BS_OK, BS_E_NULL or
+ * BS_E_UNINITIALISED. */
+bs_status bs_observer_get(const bs_observer *obs, bs_observer_estimate *estimate);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,576 @@
+/* bs_observer.c - the digital twin corrected from measurements (docs/twin.md,
+ * "Observer"; docs/model.md 10).
+ *
+ * Symbols -> variables. Per step k: a_k base_accel (mean base acceleration),
+ * y_k measurement (w(4L/7) or patch voltage v), d = gains->latency (the
+ * signal lags a_k by d steps), y^ the twin's own signal, w^ its w(4L/7).
+ *
+ * 1. Twin step: bs_sim_step_measured(sim, a_k).
+ * 2. Alignment: ring buffers keep a, y^ and w^ of the last d steps; the
+ *    measurement y_k is compared with y^_{k-d} and demodulated against
+ *    a_{k-d} (the twin's prediction is delayed to meet the late signal).
+ *    Innovation e = y_k - y^_{k-d}.
+ * 3. Beam correction (output injection): q += L_q e, u += L_u e, v += L_v e,
+ *    L = L(s) interpolated in the gain schedule at the twin's s. L = Phi^d K,
+ *    K the steady-state Kalman gain of the linear modal model of the beam
+ *    with the slider attached at s, at dt, and Phi its one-step transition
+ *    (host/lib/observer_design.c): a measurement of the state d steps ago
+ *    corrects the present state by the correction it asks for there,
+ *    carried forward d steps. The slider is moved with the beam under it
+ *    (correct_beam below), as the attached model assumes.
+ * 4. Lock-in against a (alpha = dt / tau, two first-order stages each):
+ *      b       <- (1 - dt/tau) b + dt a      leaky integral: a's quadrature
+ *      b~      =  b - <b>                    (no offset)
+ *      kappa^2 =  <a^2> / <b~^2>             ~ Omega^2 + 1/tau^2
+ *      H_y     =  (<y a> - j kappa <y b~>) / <a^2>
+ *    H_y is the response per unit base acceleration at the excitation, as a
+ *    complex amplitude (y = Re(H_y A e^{j Omega t}) for a = A cos Omega t).
+ *    H_m of the measurement, H_t of the aligned prediction, H_w of the twin's
+ *    w(4L/7): amplitude = |H_w| sqrt(2 <a^2>).
+ * 5. Slider position, from a response map (host/lib/observer_design.c):
+ *    |H|(s) of the twin's own model at the map's excitation, for the two
+ *    branches a slider with play settles on (PCS sweeps from the clamp and
+ *    from the centre). The branch is told by the sign of Re H_m: below the
+ *    (hardened) resonance the response is opposite to a (Re H < 0, the
+ *    "stiff" branch), above it in phase (Re H > 0, "soft"). On that branch
+ *    the crossing of |H|(s) with |H_m| nearest to the twin's s is s_meas,
+ *    and s_error = s_meas - s_twin (mirrored beyond s = 1/2: s and 1 - s
+ *    respond alike, so the estimate follows the side the twin is on). The
+ *    linearised response of the beam with the slider attached cannot serve
+ *    here: on the high branch the hardening holds the response below its
+ *    resonance (phase ~150 deg where the linear model says ~10 deg), and on
+ *    the low branch the slider bounces instead of following the beam.
+ *    The twin's x_C moves by
+ *      ds/dt = clamp(position_gain (s_error -+ deadband), -rate, rate)
+ *    within the clamp stops, never across s = 1/2, and only while
+ *    s_sigma < sigma_hold and the measured excitation (amplitude
+ *    sqrt(2 <a^2>), frequency sqrt(kappa^2 - 1/tau^2) / 2 pi) is the map's
+ *    within excitation_tolerance (the map holds for that excitation only).
+ *    Errors up to position_deadband are not corrected: with a model whose
+ *    frequencies are off, the map is off too (3 % moves it by ~0.01 on
+ *    fig6), and within that band the twin's own slider dynamics, driven by
+ *    the corrected beam, are the better guide (docs/twin.md).
+ *    (5 and 6 run every POSITION_EVERY steps.)
+ * 6. Confidence. White measurement noise of standard deviation sigma_n
+ *    (gains->noise) through the lock-in's two stages leaves
+ *    sigma_|H| = sigma_n sqrt(dt / (4 tau <a^2>)) on |H_m|, so
+ *      s_sigma^2 = (sigma_|H| / |d|H|/ds|)^2 + var(s_error)
+ *    with var(s_error) the spread of the raw estimate about its mean
+ *    (low-passed over 4 tau: the plant's own chaotic scatter). A response
+ *    buried in noise, or a branch where |H| hardly changes with s, makes
+ *    it large; a measured |H_m| the branch never reaches, or an excitation
+ *    the map was not made for, makes it 1.
+ */
+#include "bs_observer.h"
+#include "bs_port.h"
+#include "bs_shape.h"
+#include "bs_sim_internal.h"
+
+#define OBSERVER_READY 0x62736f62u /* "bsob" */
+#define TWO_PI BS_R(6.283185307179586)
+#define HALF_PI BS_R(1.5707963267948966)
+#define PI BS_R(3.141592653589793)
+#define SIGMA_UNKNOWN BS_R(1.0) /* s_sigma while nothing is known */
+/* Steps between two updates of s (the lock-in moves over ~tau = 5000 steps;
+ * the map search is the dearest part of a step). */
+#define POSITION_EVERY 16
+
+typedef struct complex_real {
+    bs_real re, im;
+} complex_real;
+
+bs_observer_options bs_observer_defaults(void)
+{
+    bs_observer_options o;
+    o.correct_beam = 1;
+    o.correct_position = 1;
+    o.lockin_time = (bs_real)BS_OBSERVER_DEFAULT_LOCKIN_TIME;
+    o.position_gain = (bs_real)BS_OBSERVER_DEFAULT_POSITION_GAIN;
+    o.position_rate = (bs_real)BS_OBSERVER_DEFAULT_POSITION_RATE;
+    o.position_deadband = (bs_real)BS_OBSERVER_DEFAULT_POSITION_DEADBAND;
+    o.sigma_hold = (bs_real)BS_OBSERVER_DEFAULT_SIGMA_HOLD;
+    o.excitation_tolerance = (bs_real)BS_OBSERVER_DEFAULT_EXCITATION_TOLERANCE;
+    o.settle_time = (bs_real)BS_OBSERVER_DEFAULT_SETTLE_TIME;
+    return o;
+}
+
+static int finite(bs_real x)
+{
+    return x - x == BS_R(0.0);
+}
+
+static int valid_options(const bs_observer_options *o)
+{
+    return (o->correct_beam == 0 || o->correct_beam == 1) && (o->correct_position == 0 || o->correct_position == 1)
+           && finite(o->lockin_time) && o->lockin_time > BS_R(0.0) && finite(o->position_gain)
+           && o->position_gain >= BS_R(0.0) && finite(o->position_rate) && o->position_rate >= BS_R(0.0)
+           && finite(o->position_deadband) && o->position_deadband >= BS_R(0.0)
+           && finite(o->sigma_hold) && o->sigma_hold > BS_R(0.0) && finite(o->excitation_tolerance)
+           && o->excitation_tolerance > BS_R(0.0) && finite(o->settle_time)
+           && o->settle_time >= BS_R(0.0);
+}
+
+/* The map: s ascending within (0, 1/2], everything finite (|H| < 0: no
+ * such branch at that s), an excitation it was made at. */
+static int valid_table(const bs_observer_gains *g)
+{
+    int i;
+    if (g->table_count < 2 || g->table_count > BS_OBSERVER_TABLE || !finite(g->table_frequency)
+        || !(g->table_frequency > BS_R(0.0)) || !finite(g->table_accel) || !(g->table_accel > BS_R(0.0)))
+        return 0;
+    for (i = 0; i < g->table_count; ++i) {
+        if (!finite(g->table_s[i]) || !finite(g->table_stiff[i]) || !finite(g->table_soft[i])
+            || !(g->table_s[i] > BS_R(0.0) && g->table_s[i] <= BS_R(0.5)))
+            return 0;
+        if (i > 0 && !(g->table_s[i] > g->table_s[i - 1]))
+            return 0;
+    }
+    return 1;
+}
+
+static int valid_schedule(const bs_observer_gains *g, int n)
+{
+    int i, k;
+    if (g->gain_count < 2 || g->gain_count > BS_OBSERVER_GAINS)
+        return 0;
+    for (i = 0; i < g->gain_count; ++i) {
+        if (!finite(g->gain_s[i]) || !finite(g->gain_v[i]) || (i > 0 && !(g->gain_s[i] > g->gain_s[i - 1])))
+            return 0;
+        for (k = 0; k < n; ++k)
+            if (!finite(g->gain_q[i][k]) || !finite(g->gain_u[i][k]))
+                return 0;
+    }
+    return 1;
+}
+
+static int valid_gains(const bs_observer_gains *g, const bs_scene *scene)
+{
+    if (g->n_modes != scene->n_modes || g->latency < 0 || g->latency > BS_OBSERVER_MAX_LATENCY
+        || !finite(g->noise) || !(g->noise > BS_R(0.0)))
+        return 0;
+    if (g->signal == BS_SIGNAL_VOLTAGE) {
+#if BS_WITH_PIEZO
+        if (scene->load != BS_LOAD_RESISTOR)
+            return 0;
+#else
+        return 0;
+#endif
+    } else if (g->signal != BS_SIGNAL_DEFLECTION) {
+        return 0;
+    }
+    return valid_schedule(g, scene->n_modes) && valid_table(g);
+}
+
+static bs_real twin_signal(const bs_sim *sim, int signal)
+{
+#if BS_WITH_PIEZO
+    if (signal == BS_SIGNAL_VOLTAGE)
+        return sim->voltage;
+#else
+    (void)signal;
+#endif
+    return bs_sim_sensor(sim);
+}
+
+static bs_real twin_power(const bs_sim *sim)
+{
+#if BS_WITH_PIEZO
+    return sim->power;
+#else
+    (void)sim;
+    return BS_R(0.0);
+#endif
+}
+
+bs_status bs_observer_init(bs_observer *obs, const bs_sim *sim, const bs_observer_gains *gains,
+                           const bs_observer_options *options)
+{
+    const bs_observer_options defaults = bs_observer_defaults();
+    const bs_status status = bs_sim_status(sim);
+    bs_lowpass2 zero;
+    int i;
+
+    if (!obs)
+        return BS_E_NULL;
+    obs->ready = 0;
+    if (status != BS_OK)
+        return status;
+    if (!gains)
+        return BS_E_NULL;
+    if (!options)
+        options = &defaults;
+    if (sim->model != BS_MODEL_FREE || !valid_gains(gains, sim->scene) || !valid_options(options))
+        return BS_E_ARGUMENT;
+
+    obs->gains = gains;
+    /* member by member: a struct assignment may become a call of memcpy,
+     * which the freestanding core does not have */
+    obs->options.correct_beam = options->correct_beam;
+    obs->options.correct_position = options->correct_position;
+    obs->options.lockin_time = options->lockin_time;
+    obs->options.position_gain = options->position_gain;
+    obs->options.position_rate = options->position_rate;
+    obs->options.position_deadband = options->position_deadband;
+    obs->options.sigma_hold = options->sigma_hold;
+    obs->options.excitation_tolerance = options->excitation_tolerance;
+    obs->options.settle_time = options->settle_time;
+    obs->steps = 0;
+    obs->head = 0;
+    for (i = 0; i <= BS_OBSERVER_MAX_LATENCY; ++i) {
+        obs->past_signal[i] = twin_signal(sim, gains->signal);
+        obs->past_deflection[i] = bs_sim_sensor(sim);
+        obs->past_accel[i] = BS_R(0.0);
+    }
+    obs->quadrature = BS_R(0.0);
+    zero.stage[0] = zero.stage[1] = BS_R(0.0);
+    obs->ref_aa = obs->ref_bb = obs->ref_b = zero;
+    obs->meas_a = obs->meas_b = obs->twin_a = obs->twin_b = zero;
+    obs->defl_a = obs->defl_b = zero;
+    obs->innov_sq = obs->power = obs->s_error_mean = obs->s_error_sq = zero;
+    obs->estimate.s = bs_sim_position(sim);
+    obs->estimate.s_sigma = SIGMA_UNKNOWN;
+    obs->estimate.s_error = BS_R(0.0);
+    obs->estimate.amplitude = BS_R(0.0);
+    obs->estimate.power = BS_R(0.0);
+    obs->estimate.phase_error = BS_R(0.0);
+    obs->estimate.frequency = BS_R(0.0);
+    obs->estimate.measurement = BS_R(0.0);
+    obs->estimate.prediction = obs->past_signal[0];
+    obs->estimate.innovation = BS_R(0.0);
+    obs->ready = OBSERVER_READY;
+    return BS_OK;
+}
+
+/* x_C += dx as the compensated pair (x_C, x_c_low) with TwoSum, so that
+ * sub-ulp moves are kept (docs/model.md 9.2). */
+static void add_position(bs_sim *sim, bs_real dx)
+{
+    const bs_real b = dx + sim->x_c_low;
+    const bs_real sum = sim->slider[0] + b;
+    const bs_real b_virtual = sum - sim->slider[0];
+    sim->x_c_low = (sim->slider[0] - (sum - b_virtual)) + (b - b_virtual);
+    sim->slider[0] = sum;
+}
+
+/* The gains at s: linear between the schedule's points, held beyond its ends. */
+static void gains_at(const bs_observer_gains *g, bs_real s, int n, bs_real *gain_q, bs_real *gain_u, bs_real *gain_v)
+{
+    const int last = g->gain_count - 1;
+    bs_real t;
+    int i = 0, k;
+    if (s < g->gain_s[0])
+        s = g->gain_s[0];
+    if (s > g->gain_s[last])
+        s = g->gain_s[last];
+    while (i < last - 1 && s > g->gain_s[i + 1])
+        ++i;
+    t = (s - g->gain_s[i]) / (g->gain_s[i + 1] - g->gain_s[i]);
+    for (k = 0; k < n; ++k) {
+        gain_q[k] = g->gain_q[i][k] + t * (g->gain_q[i + 1][k] - g->gain_q[i][k]);
+        gain_u[k] = g->gain_u[i][k] + t * (g->gain_u[i + 1][k] - g->gain_u[i][k]);
+    }
+    *gain_v = g->gain_v[i] + t * (g->gain_v[i + 1] - g->gain_v[i]);
+}
+
+/* 3: output injection on the beam (and the patch voltage), the slider
+ * carried along as if attached: the gains are those of the beam with the
+ * slider rigidly attached, and moving the beam under a slider that stays
+ * would open or close its contacts, i.e. kick it. At x_C the beam moves by
+ * dw = phi^T dq and tilts by dw' = phi'^T dq; the slider follows:
+ * z_r += dw, beta -= dw' (beta is clockwise), x_C += d dw' (its centre of
+ * mass, d below the slot centre, swings with the tilt); likewise the
+ * velocities with du. */
+static void correct_beam(bs_sim *sim, const bs_observer_gains *g, bs_real e)
+{
+    const bs_scene *scene = sim->scene;
+    const int n = BS_NMODES(scene);
+    bs_real gain_q[BS_MAX_MODES], gain_u[BS_MAX_MODES], gain_v, phi[BS_MAX_MODES], slope[BS_MAX_MODES];
+    bs_real dw = BS_R(0.0), dw_slope = BS_R(0.0), dv = BS_R(0.0), dv_slope = BS_R(0.0);
+    const bs_real x = sim->slider[0] + sim->x_c_low;
+    int k;
+
+    gains_at(g, x / scene->length, n, gain_q, gain_u, &gain_v);
+    bs_shape_eval(scene, x, phi, slope);
+    for (k = 0; k < n; ++k) {
+        const bs_real dq = gain_q[k] * e, du = gain_u[k] * e;
+        sim->q_beam[k] += dq;
+        sim->u_beam[k] += du;
+        dw += phi[k] * dq;
+        dw_slope += slope[k] * dq;
+        dv += phi[k] * du;
+        dv_slope += slope[k] * du;
+    }
+    sim->slider[1] += dw;
+    sim->slider_velocity[1] += dv;
+#if BS_WITH_ROTATION
+    sim->slider[2] -= dw_slope;
+    sim->slider_velocity[2] -= dv_slope;
+#endif
+    add_position(sim, scene->com_offset * dw_slope);
+    sim->slider_velocity[0] += scene->com_offset * dv_slope;
+#if BS_WITH_PIEZO
+    if (scene->load != BS_LOAD_NONE)
+        sim->voltage += gain_v * e;
+#else
+    (void)gain_v;
+#endif
+}
+
+static void lowpass2(bs_lowpass2 *f, bs_real x, bs_real alpha)
+{
+    f->stage[0] += alpha * (x - f->stage[0]);
+    f->stage[1] += alpha * (f->stage[0] - f->stage[1]);
+}
+
+static bs_real mean(const bs_lowpass2 *f)
+{
+    return f->stage[1];
+}
+
+/* 4: one step of the lock-in with the aligned samples. */
+static void demodulate(bs_observer *obs, bs_real dt, bs_real a, bs_real y, bs_real y_twin, bs_real w_twin,
+                       bs_real e, bs_real power)
+{
+    const bs_real tau = obs->options.lockin_time;
+    const bs_real alpha = dt / tau;
+    bs_real b;
+
+    obs->quadrature = (BS_R(1.0) - alpha) * obs->quadrature + dt * a;
+    lowpass2(&obs->ref_b, obs->quadrature, alpha);
+    b = obs->quadrature - mean(&obs->ref_b);
+    lowpass2(&obs->ref_aa, a * a, alpha);
+    lowpass2(&obs->ref_bb, b * b, alpha);
+    lowpass2(&obs->meas_a, y * a, alpha);
+    lowpass2(&obs->meas_b, y * b, alpha);
+    lowpass2(&obs->twin_a, y_twin * a, alpha);
+    lowpass2(&obs->twin_b, y_twin * b, alpha);
+    lowpass2(&obs->defl_a, w_twin * a, alpha);
+    lowpass2(&obs->defl_b, w_twin * b, alpha);
+    lowpass2(&obs->innov_sq, e * e, alpha);
+    lowpass2(&obs->power, power, alpha);
+}
+
+/* H = (<y a> - j kappa <y b~>) / <a^2>; kappa = sqrt(<a^2> / <b~^2>). */
+static complex_real transfer(const bs_observer *obs, const bs_lowpass2 *with_a, const bs_lowpass2 *with_b)
+{
+    const bs_real aa = mean(&obs->ref_aa);
+    const bs_real kappa = bs_sqrt(aa / mean(&obs->ref_bb));
+    complex_real h;
+    h.re = mean(with_a) / aa;
+    h.im = -kappa * mean(with_b) / aa;
+    return h;
+}
+
+static complex_real complex_div(complex_real x, complex_real y)
+{
+    const bs_real norm = y.re * y.re + y.im * y.im;
+    complex_real r;
+    r.re = (x.re * y.re + x.im * y.im) / norm;
+    r.im = (x.im * y.re - x.re * y.im) / norm;
+    return r;
+}
+
+/* atan2 to about 1e-5 rad (a reported angle only: the core has no atan). */
+static bs_real angle_of(bs_real y, bs_real x)
+{
+    const bs_real ax = bs_fabs(x), ay = bs_fabs(y);
+    const bs_real big = ax > ay ? ax : ay, small = ax > ay ? ay : ax;
+    bs_real t, t2, r;
+    if (big == BS_R(0.0))
+        return BS_R(0.0);
+    t = small / big;
+    t2 = t * t;
+    r = t * (BS_R(0.99997726) + t2 * (BS_R(-0.33262347) + t2 * (BS_R(0.19354346)
+        + t2 * (BS_R(-0.11643287) + t2 * (BS_R(0.05265332) + t2 * BS_R(-0.01172120))))));
+    if (ay > ax)
+        r = HALF_PI - r;
+    if (x < BS_R(0.0))
+        r = PI - r;
+    return y < BS_R(0.0) ? -r : r;
+}
+
+/* On one branch of the map, the crossing of |H|(s) with target nearest to
+ * near: *s_cross and the slope d|H|/ds of its segment. Returns 0 if the
+ * branch never reaches target. */
+static int invert_map(const bs_observer_gains *g, const bs_real *h, bs_real target, bs_real near, bs_real *s_cross,
+                      bs_real *slope)
+{
+    bs_real best = BS_R(2.0);
+    int i, found = 0;
+    for (i = 0; i + 1 < g->table_count; ++i) {
+        const bs_real h0 = h[i], h1 = h[i + 1];
+        if (h0 < BS_R(0.0) || h1 < BS_R(0.0))
+            continue; /* the branch does not exist there */
+        if ((h0 - target) * (h1 - target) <= BS_R(0.0) && h0 != h1) {
+            const bs_real s = g->table_s[i] + (target - h0) / (h1 - h0) * (g->table_s[i + 1] - g->table_s[i]);
+            if (bs_fabs(s - near) < best) {
+                best = bs_fabs(s - near);
+                *s_cross = s;
+                *slope = (h1 - h0) / (g->table_s[i + 1] - g->table_s[i]);
+                found = 1;
+            }
+        }
+    }
+    return found;
+}
+
+/* 1 while the measured excitation is the map's within the tolerance. */
+static int excitation_matches(const bs_observer *obs, bs_real frequency, bs_real amplitude)
+{
+    const bs_observer_gains *g = obs->gains;
+    const bs_real tol = obs->options.excitation_tolerance;
+    return bs_fabs(frequency - g->table_frequency) <= BS_R(0.1) * tol * g->table_frequency
+           && bs_fabs(amplitude - g->table_accel) <= tol * g->table_accel;
+}
+
+/* 5 and 6: s_error, s_sigma and the reported quantities from the lock-in. */
+static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
+{
+    const bs_observer_gains *g = obs->gains;
+    const bs_real aa = mean(&obs->ref_aa);
+    const bs_real tau = obs->options.lockin_time;
+    bs_observer_estimate *est = &obs->estimate;
+    complex_real h_m, h_t, h_w, ratio;
+    bs_real hm_abs, kappa_sq, omega_sq, s_near, s_cross = BS_R(0.0), slope = BS_R(0.0), s_error, sigma_h;
+    bs_real var_spread;
+    int mirror;
+
+    est->s = bs_sim_position(sim);
+    est->power = mean(&obs->power);
+    est->s_sigma = SIGMA_UNKNOWN;
+    est->s_error = BS_R(0.0);
+    if (!(aa > BS_R(0.0) && mean(&obs->ref_bb) > BS_R(0.0)))
+        return; /* no excitation yet: nothing to demodulate against */
+    h_m = transfer(obs, &obs->meas_a, &obs->meas_b);
+    h_t = transfer(obs, &obs->twin_a, &obs->twin_b);
+    h_w = transfer(obs, &obs->defl_a, &obs->defl_b);
+    kappa_sq = aa / mean(&obs->ref_bb);
+    omega_sq = kappa_sq - BS_R(1.0) / (tau * tau);
+    est->frequency = omega_sq > BS_R(0.0) ? bs_sqrt(omega_sq) / TWO_PI : BS_R(0.0);
+    est->amplitude = bs_sqrt((h_w.re * h_w.re + h_w.im * h_w.im) * BS_R(2.0) * aa);
+    hm_abs = bs_sqrt(h_m.re * h_m.re + h_m.im * h_m.im);
+    if (h_t.re * h_t.re + h_t.im * h_t.im > BS_R(0.0)) {
+        ratio = complex_div(h_m, h_t);
+        est->phase_error = angle_of(ratio.im, ratio.re);
+    }
+    if (!excitation_matches(obs, est->frequency, bs_sqrt(BS_R(2.0) * aa)))
+        return;
+    mirror = est->s > BS_R(0.5);
+    s_near = mirror ? BS_R(1.0) - est->s : est->s;
+    if (!invert_map(g, h_m.re < BS_R(0.0) ? g->table_stiff : g->table_soft, hm_abs, s_near, &s_cross, &slope)
+        || slope == BS_R(0.0))
+        return;
+    s_error = mirror ? s_near - s_cross : s_cross - s_near;
+    {
+        const bs_real alpha = dt * (bs_real)POSITION_EVERY / (BS_R(4.0) * tau);
+        lowpass2(&obs->s_error_mean, s_error, alpha);
+        lowpass2(&obs->s_error_sq, s_error * s_error, alpha);
+    }
+    var_spread = mean(&obs->s_error_sq) - mean(&obs->s_error_mean) * mean(&obs->s_error_mean);
+    if (var_spread < BS_R(0.0))
+        var_spread = BS_R(0.0);
+    sigma_h = g->noise * bs_sqrt(dt / (BS_R(4.0) * tau * aa)) / bs_fabs(slope);
+    est->s_error = s_error;
+    est->s_sigma = bs_sqrt(sigma_h * sigma_h + var_spread);
+    if (!finite(est->s_sigma) || est->s_sigma > SIGMA_UNKNOWN)
+        est->s_sigma = SIGMA_UNKNOWN;
+}
+
+/* x_C += ds L within the stops, not across s = 1/2. */
+static void move_slider(bs_sim *sim, bs_real ds)
+{
+    const bs_scene *scene = sim->scene;
+    const bs_real x = sim->slider[0] + sim->x_c_low;
+    const bs_real half = BS_R(0.5) * scene->length;
+    bs_real target = x + ds * scene->length;
+    if (x <= half && target > half)
+        target = half;
+    if (x >= half && target < half)
+        target = half;
+    if (target < scene->stop_min)
+        target = scene->stop_min;
+    if (target > scene->stop_max)
+        target = scene->stop_max;
+    add_position(sim, target - x);
+}
+
+/* Moves x_C by the correction over interval [s] (the time since the last). */
+static void correct_position(bs_observer *obs, bs_sim *sim, bs_real interval)
+{
+    const bs_observer_options *o = &obs->options;
+    bs_real rate, error;
+    if (!o->correct_position || (bs_real)obs->steps * sim->scene->dt < o->settle_time
+        || !(obs->estimate.s_sigma < o->sigma_hold))
+        return;
+    error = obs->estimate.s_error;
+    if (error > o->position_deadband)
+        error -= o->position_deadband;
+    else if (error < -o->position_deadband)
+        error += o->position_deadband;
+    else
+        return;
+    rate = o->position_gain * error;
+    if (rate > o->position_rate)
+        rate = o->position_rate;
+    if (rate < -o->position_rate)
+        rate = -o->position_rate;
+    move_slider(sim, rate * interval);
+    obs->estimate.s = bs_sim_position(sim);
+}
+
+bs_status bs_observer_step(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_real measurement)
+{
+    const bs_observer_gains *g;
+    bs_status status;
+    bs_real dt, e;
+    int aligned;
+
+    if (!obs)
+        return BS_E_NULL;
+    if (obs->ready != OBSERVER_READY)
+        return BS_E_UNINITIALISED;
+    status = bs_sim_status(sim);
+    if (status != BS_OK)
+        return status;
+    if (!finite(base_accel) || !finite(measurement))
+        return BS_E_ARGUMENT; /* refused: nothing changes */
+    status = bs_sim_step_measured(sim, base_accel);
+    if (status != BS_OK)
+        return status;
+
+    g = obs->gains;
+    dt = sim->scene->dt;
+    obs->steps += 1;
+    obs->head = obs->head == BS_OBSERVER_MAX_LATENCY ? 0 : obs->head + 1;
+    obs->past_signal[obs->head] = twin_signal(sim, g->signal);
+    obs->past_deflection[obs->head] = bs_sim_sensor(sim);
+    obs->past_accel[obs->head] = base_accel;
+    aligned = obs->head - g->latency;
+    if (aligned < 0)
+        aligned += BS_OBSERVER_MAX_LATENCY + 1;
+
+    e = measurement - obs->past_signal[aligned];
+    obs->estimate.measurement = measurement;
+    obs->estimate.prediction = obs->past_signal[aligned];
+    obs->estimate.innovation = e;
+    if (obs->options.correct_beam)
+        correct_beam(sim, g, e);
+    demodulate(obs, dt, obs->past_accel[aligned], measurement, obs->past_signal[aligned],
+               obs->past_deflection[aligned], e, twin_power(sim));
+    if (obs->steps % POSITION_EVERY == 0) {
+        estimate_position(obs, sim, dt);
+        correct_position(obs, sim, dt * (bs_real)POSITION_EVERY);
+    }
+    obs->estimate.s = bs_sim_position(sim);
+    return BS_OK;
+}
+
+bs_status bs_observer_get(const bs_observer *obs, bs_observer_estimate *estimate)
+{
+    if (!obs || !estimate)
+        return BS_E_NULL;
+    if (obs->ready != OBSERVER_READY)
+        return BS_E_UNINITIALISED;
+    *estimate = obs->estimate;
+    return BS_OK;
+}

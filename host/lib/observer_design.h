@@ -1,0 +1,58 @@
+/* observer_design.h - the constants of the twin's observer (core/include/
+ * bs_observer.h), designed on the host in double: the steady-state Kalman
+ * gains of the linear modal model and the slider table (docs/twin.md,
+ * "Observer"). */
+#ifndef OBSERVER_DESIGN_H
+#define OBSERVER_DESIGN_H
+
+#include <stddef.h>
+#include <stdio.h>
+#include "bs_observer.h"
+#include "scene_build.h"
+
+/* What the gains are designed for. */
+typedef struct observer_design_options {
+    int signal;           /* BS_SIGNAL_DEFLECTION or BS_SIGNAL_VOLTAGE (resistor load only) */
+    double noise;         /* measurement noise standard deviation per sample [m or V], > 0 */
+    double force_noise;   /* process noise: one-sided density of an unmodelled force acting at a
+                             random point of the beam [N/sqrt(Hz)], >= 0 (the contacts the linear
+                             model leaves out) */
+    double accel_noise;   /* noise of the measured base acceleration, per sample [m/s^2], >= 0 */
+    int latency;          /* the signal lags the base acceleration by this many steps,
+                             0 .. BS_OBSERVER_MAX_LATENCY */
+    int map_hold;         /* response map: excitation periods held at each point before ... (>= 0) */
+    int map_record;       /* ... the first harmonic is taken over this many (>= 1) */
+} observer_design_options;
+
+/* Defaults (observer_design_defaults): deflection, no latency, no
+ * acceleration noise, force noise OBSERVER_DEFAULT_FORCE_NOISE, map 60 + 40
+ * periods per point; noise has no default (the caller states it). */
+#define OBSERVER_DEFAULT_FORCE_NOISE 1e-3
+#define OBSERVER_DEFAULT_MAP_HOLD 60
+#define OBSERVER_DEFAULT_MAP_RECORD 40
+
+/* The defaults, with noise as given. */
+observer_design_options observer_design_defaults(double noise);
+
+/* Designs the constants for scene, built from file (scene_build's model):
+ * the linear modal model at the scene's dt (the core's own step without
+ * contacts and stretching, with the patch and its resistor), the discrete
+ * Riccati equation solved by the structure-preserving doubling algorithm,
+ * K = P C^T / (C P C^T + R), gains = Phi^latency K; and the response map
+ * over [stop_min / L, 1/2] from two PCS sweeps of scene at its excitation
+ * (about 2 x 48 x (hold + record) periods of simulation). Returns 0, or -1
+ * with a message in err. */
+int observer_design(const scene_file *file, const scene_model *model, const bs_scene *scene,
+                    const observer_design_options *options, bs_observer_gains *gains, char *err, size_t err_size);
+
+/* The observer's linear model: state x = (q_1..q_N, u_1..u_N[, v]), one step
+ * x' = Phi x + Gamma a + F f (f: modal forces held over the step). Returns
+ * the state size. Exposed for the tests. */
+int observer_linear_step(const scene_data *data, int with_voltage, const double *x, double base_accel,
+                         const double *force, double *next);
+
+/* Prints gains as a C header (`beamslider twin-gains`): a static const
+ * bs_observer_gains named `name`. Returns 0, or -1 on a write error. */
+int observer_print_gains(FILE *out, const bs_observer_gains *gains, const char *name, const char *comment);
+
+#endif

@@ -1,0 +1,269 @@
+/* test_observer.c - the twin's observer (core/src/bs_observer.c) and its
+ * design (host/lib/observer_design.c) on fig6: a plant (a bs_sim stepped
+ * under the scene's excitation) and a twin (a bs_sim stepped by the observer
+ * on the plant's base acceleration and w(4L/7), with white noise 40 dB below
+ * their RMS) run side by side. The thresholds are the figures of docs/twin.md
+ * ("Observer") with margin: the runs are chaotic, and float and double take
+ * different trajectories. */
+#include "support.h"
+
+#include <math.h>
+#include <string.h>
+#include "bs_observer.h"
+#include "observer_design.h"
+
+#define SIGNAL_NOISE 7.5e-6 /* 40 dB below the RMS of fig6's w(4L/7) over 60 s [m] */
+#define ACCEL_NOISE 0.099   /* 40 dB below the RMS of its base acceleration [m/s^2] */
+
+static scene_file file;
+static bs_scene scene;
+static scene_model model;
+static bs_observer_gains gains;
+static bs_sim plant, twin;
+static bs_observer obs;
+
+/* fig6 and its observer's constants (designed once: the response map takes
+ * two PCS sweeps). */
+static void load_fig6(void)
+{
+    static int designed;
+    char err[256];
+    observer_design_options o = observer_design_defaults(SIGNAL_NOISE);
+    support_load("configs/fig6.ini", &file, &scene, &model);
+    if (designed)
+        return;
+    o.accel_noise = ACCEL_NOISE;
+    if (observer_design(&file, &model, &scene, &o, &gains, err, sizeof err) != 0)
+        fail_msg("%s", err);
+    designed = 1;
+}
+
+/* Reproducible white Gaussian noise (xorshift64*, Box-Muller). */
+static uint64_t rng = 1;
+static double gaussian(void)
+{
+    double u[2];
+    int i;
+    for (i = 0; i < 2; ++i) {
+        rng ^= rng >> 12;
+        rng ^= rng << 25;
+        rng ^= rng >> 27;
+        u[i] = ((double)((rng * UINT64_C(2685821657736338717)) >> 11) + 0.5) / 9007199254740992.0;
+    }
+    return sqrt(-2.0 * log(u[0])) * cos(6.283185307179586 * u[1]);
+}
+
+/* What a side-by-side run measured. */
+typedef struct pair_result {
+    double error_rms;    /* RMS of w_plant - w_twin over the window [m] */
+    double s_error;      /* s_twin - s_plant at the end */
+    double s_error_max;  /* largest |s_twin - s_plant| over the window */
+    bs_observer_estimate last;
+} pair_result;
+
+/* Steps plant and twin (already initialised; obs on twin) for `seconds`;
+ * the window is [from, seconds]. Noise: noise_factor times SIGNAL_NOISE on
+ * w(4L/7), ACCEL_NOISE on the base acceleration if noise_factor > 0. */
+static void run_pair(double seconds, double from, double noise_factor, pair_result *r)
+{
+    const long steps = lround(seconds / (double)scene.dt), first = lround(from / (double)scene.dt);
+    double sum = 0.0;
+    long k;
+    memset(r, 0, sizeof *r);
+    rng = 0x9e3779b97f4a7c15u;
+    for (k = 1; k <= steps; ++k) {
+        double a, y, s_error;
+        assert_int_equal(bs_sim_step(&plant), BS_OK);
+        a = (double)bs_sim_base_acceleration(&plant) + (noise_factor > 0.0) * ACCEL_NOISE * gaussian();
+        y = (double)bs_sim_sensor(&plant) + noise_factor * SIGNAL_NOISE * gaussian();
+        assert_int_equal(bs_observer_step(&obs, &twin, (bs_real)a, (bs_real)y), BS_OK);
+        if (k < first)
+            continue;
+        {
+            const double w = (double)bs_sim_sensor(&plant) - (double)bs_sim_sensor(&twin);
+            sum += w * w;
+        }
+        s_error = (double)bs_sim_position(&twin) - (double)bs_sim_position(&plant);
+        r->s_error_max = fmax(r->s_error_max, fabs(s_error));
+        r->s_error = s_error;
+    }
+    r->error_rms = sqrt(sum / (double)(steps - first + 1));
+    assert_int_equal(bs_observer_get(&obs, &r->last), BS_OK);
+}
+
+/* Plant from rest at s0 = 0.3; the twin at twin_s0, with options. */
+static void start_pair(double twin_s0, const bs_observer_options *options)
+{
+    assert_int_equal(bs_sim_init(&plant, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    assert_int_equal(bs_sim_init(&twin, &scene, BS_MODEL_FREE, (bs_real)twin_s0), BS_OK);
+    assert_int_equal(bs_observer_init(&obs, &twin, &gains, options), BS_OK);
+}
+
+/* A twin whose beam state is wrong (it was shaken for 0.1 s while the plant
+ * rested) follows the plant's w(4L/7) within 0.1 s with the correction; left
+ * open loop, it is still off by more than a third of its initial error
+ * after 0.2 s (the beam's modal damping is 0.1 %: ~1.3 s at 124 Hz). */
+static void test_beam_correction_converges_faster_than_open_loop(void **state)
+{
+    bs_observer_options options = bs_observer_defaults();
+    pair_result corrected, open_loop, initial;
+    int closed;
+    (void)state;
+    load_fig6();
+    options.correct_position = 0;
+    for (closed = 1; closed >= 0; --closed) {
+        pair_result *r = closed ? &corrected : &open_loop;
+        long k;
+        options.correct_beam = closed;
+        start_pair(0.3, &options);
+        for (k = 0; k < 5000; ++k) /* the wrong beam state: 0.1 s of shaking */
+            assert_int_equal(bs_sim_step(&twin), BS_OK);
+        assert_int_equal(bs_observer_init(&obs, &twin, &gains, &options), BS_OK);
+        run_pair(0.02, 0.0, 0.0, &initial);
+        run_pair(0.2, 0.1, 1.0, r);
+        print_message("beam %s: w error %.3g m in the first 0.02 s, %.3g m over [0.12, 0.22] s\n",
+                      closed ? "corrected" : "open loop", initial.error_rms, r->error_rms);
+        if (!closed)
+            assert_true(r->error_rms > initial.error_rms / 3.0);
+    }
+    assert_true(corrected.error_rms < open_loop.error_rms / 5.0);
+    assert_true(corrected.error_rms < 3.0 * SIGNAL_NOISE);
+}
+
+/* A twin started 0.05 L from the plant (0.35 against 0.3) is brought back:
+ * within 0.01 over [10, 12] s, where the open-loop twin is further off. */
+static void test_position_tracker_recovers_a_twin_started_off(void **state)
+{
+    bs_observer_options options = bs_observer_defaults();
+    pair_result tracked, open_loop;
+    (void)state;
+    load_fig6();
+    start_pair(0.35, &options);
+    run_pair(12.0, 10.0, 1.0, &tracked);
+    options.correct_beam = options.correct_position = 0;
+    start_pair(0.35, &options);
+    run_pair(12.0, 10.0, 1.0, &open_loop);
+    print_message("s_twin - s_plant over [10, 12] s: tracked max %.4f (end %.4f, s_sigma %.4f), open loop max %.4f\n",
+                  tracked.s_error_max, tracked.s_error, (double)tracked.last.s_sigma, open_loop.s_error_max);
+    assert_true(tracked.s_error_max <= 0.01);
+    assert_true(open_loop.s_error_max > tracked.s_error_max);
+    assert_true((double)tracked.last.s_sigma < 0.01);
+}
+
+/* Confidence follows the signal-to-noise ratio: at 40 dB s_sigma is small;
+ * with the response buried 20 dB under the noise s_sigma exceeds the hold
+ * threshold and s is left alone. */
+static void test_confidence_is_low_where_the_response_is_tiny(void **state)
+{
+    static bs_observer_gains buried;
+    bs_observer_options options = bs_observer_defaults();
+    pair_result clear, noisy;
+    (void)state;
+    load_fig6();
+    options.correct_beam = 0;
+    start_pair(0.3, &options);
+    run_pair(3.0, 2.0, 1.0, &clear);
+    buried = gains;
+    buried.noise = (bs_real)(1000.0 * SIGNAL_NOISE);
+    assert_int_equal(bs_sim_init(&plant, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    assert_int_equal(bs_sim_init(&twin, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    assert_int_equal(bs_observer_init(&obs, &twin, &buried, &options), BS_OK);
+    run_pair(3.0, 2.0, 1000.0, &noisy);
+    print_message("s_sigma: %.4g at 40 dB, %.4g at -20 dB\n", (double)clear.last.s_sigma,
+                  (double)noisy.last.s_sigma);
+    assert_true((double)clear.last.s_sigma < 0.01);
+    assert_true(noisy.last.s_sigma > options.sigma_hold);
+}
+
+/* A measurement or base acceleration that is not finite is refused and
+ * changes nothing, in the observer or in the twin. */
+static void test_nan_measurement_is_refused_without_change(void **state)
+{
+    static bs_observer before;
+    bs_observer_estimate e_before, e_after;
+    uint32_t hash;
+    int k;
+    (void)state;
+    load_fig6();
+    start_pair(0.3, NULL);
+    for (k = 0; k < 100; ++k)
+        assert_int_equal(bs_observer_step(&obs, &twin, BS_R(1.0), BS_R(1e-6)), BS_OK);
+    before = obs;
+    hash = bs_sim_hash(&twin);
+    assert_int_equal(bs_observer_get(&obs, &e_before), BS_OK);
+    assert_int_equal(bs_observer_step(&obs, &twin, BS_R(1.0), (bs_real)NAN), BS_E_ARGUMENT);
+    assert_int_equal(bs_observer_step(&obs, &twin, BS_R(1.0), (bs_real)INFINITY), BS_E_ARGUMENT);
+    assert_int_equal(bs_observer_step(&obs, &twin, (bs_real)NAN, BS_R(1e-6)), BS_E_ARGUMENT);
+    assert_int_equal(bs_sim_hash(&twin), hash);
+    assert_int_equal(bs_observer_get(&obs, &e_after), BS_OK);
+    assert_memory_equal(&e_before, &e_after, sizeof e_before);
+    assert_memory_equal(&before, &obs, sizeof obs);
+    assert_int_equal(bs_observer_step(&obs, &twin, BS_R(1.0), BS_R(1e-6)), BS_OK);
+}
+
+static void test_init_refuses_what_does_not_fit(void **state)
+{
+    static bs_observer_gains bad;
+    static bs_observer unready;
+    bs_observer_options options = bs_observer_defaults();
+    bs_observer_estimate e;
+    (void)state;
+    load_fig6();
+    assert_int_equal(bs_sim_init(&twin, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    assert_int_equal(bs_observer_init(NULL, &twin, &gains, NULL), BS_E_NULL);
+    assert_int_equal(bs_observer_init(&obs, &twin, NULL, NULL), BS_E_NULL);
+    memset(&unready, 0, sizeof unready);
+    assert_int_equal(bs_observer_step(&unready, &twin, BS_R(0.0), BS_R(0.0)), BS_E_UNINITIALISED);
+    assert_int_equal(bs_observer_get(&unready, &e), BS_E_UNINITIALISED);
+    bad = gains;
+    bad.n_modes = 1; /* another scene's */
+    assert_int_equal(bs_observer_init(&obs, &twin, &bad, NULL), BS_E_ARGUMENT);
+    bad = gains;
+    bad.signal = BS_SIGNAL_VOLTAGE; /* fig6 has no transducer */
+    assert_int_equal(bs_observer_init(&obs, &twin, &bad, NULL), BS_E_ARGUMENT);
+    bad = gains;
+    bad.latency = BS_OBSERVER_MAX_LATENCY + 1;
+    assert_int_equal(bs_observer_init(&obs, &twin, &bad, NULL), BS_E_ARGUMENT);
+    bad = gains;
+    bad.gain_u[3][0] = (bs_real)NAN;
+    assert_int_equal(bs_observer_init(&obs, &twin, &bad, NULL), BS_E_ARGUMENT);
+    options.lockin_time = BS_R(0.0);
+    assert_int_equal(bs_observer_init(&obs, &twin, &gains, &options), BS_E_ARGUMENT);
+    assert_int_equal(bs_observer_step(&obs, &twin, BS_R(0.0), BS_R(0.0)), BS_E_UNINITIALISED);
+    assert_int_equal(bs_sim_init(&twin, &scene, BS_MODEL_PCS, BS_R(0.3)), BS_OK);
+    assert_int_equal(bs_observer_init(&obs, &twin, &gains, NULL), BS_E_ARGUMENT);
+}
+
+/* The design: finite gains, each taking a part of the innovation in (0, 1)
+ * at the sensor (C K of a Kalman filter), and a response map on both
+ * branches around fig6's turning point. */
+static void test_design_gives_kalman_gains_and_a_map(void **state)
+{
+    int j, k, soft = 0;
+    (void)state;
+    load_fig6();
+    for (j = 0; j < gains.gain_count; ++j) {
+        double ck = 0.0;
+        for (k = 0; k < gains.n_modes; ++k)
+            ck += (double)scene.phi_sensor[k] * (double)gains.gain_q[j][k];
+        assert_true(ck > 0.0 && ck < 1.0);
+    }
+    for (j = 0; j < gains.table_count; ++j) {
+        assert_true(gains.table_stiff[j] > 0);
+        soft += gains.table_soft[j] > 0;
+    }
+    assert_true(soft > gains.table_count / 3); /* the low branch beyond ~0.26 */
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_design_gives_kalman_gains_and_a_map),
+        cmocka_unit_test(test_init_refuses_what_does_not_fit),
+        cmocka_unit_test(test_nan_measurement_is_refused_without_change),
+        cmocka_unit_test(test_beam_correction_converges_faster_than_open_loop),
+        cmocka_unit_test(test_position_tracker_recovers_a_twin_started_off),
+        cmocka_unit_test(test_confidence_is_low_where_the_response_is_tiny),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
