@@ -571,6 +571,16 @@ bs_status bs_observer_get(const bs_observer *obs, bs_observer_estimate *estimate
         return BS_E_NULL;
     if (obs->ready != OBSERVER_READY)
         return BS_E_UNINITIALISED;
-    *estimate = obs->estimate;
+    /* member by member, as in bs_observer_init: no memcpy in the core */
+    estimate->s = obs->estimate.s;
+    estimate->s_sigma = obs->estimate.s_sigma;
+    estimate->s_error = obs->estimate.s_error;
+    estimate->amplitude = obs->estimate.amplitude;
+    estimate->power = obs->estimate.power;
+    estimate->phase_error = obs->estimate.phase_error;
+    estimate->frequency = obs->estimate.frequency;
+    estimate->measurement = obs->estimate.measurement;
+    estimate->prediction = obs->estimate.prediction;
+    estimate->innovation = obs->estimate.innovation;
     return BS_OK;
 }
