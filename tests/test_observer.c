@@ -201,6 +201,52 @@ static void test_nan_measurement_is_refused_without_change(void **state)
     assert_int_equal(bs_observer_step(&obs, &twin, BS_R(1.0), BS_R(1e-6)), BS_OK);
 }
 
+/* A lost measurement (bs_observer_predict): the twin runs open loop, bit
+ * for bit as bs_sim_step_measured would step it, the lock-in is not fed,
+ * and the delay line moves on, so that the next measurement meets the
+ * prediction of its own time (here with a latency of 3 steps). A base
+ * acceleration that is not finite is refused and changes nothing. */
+static void test_predict_steps_open_loop_and_keeps_the_delay_line(void **state)
+{
+    static bs_observer_gains late;
+    static bs_sim reference;
+    static bs_observer before;
+    static unsigned char saved[BS_CHECKPOINT_SIZE];
+    bs_real w[64];
+    bs_lowpass2 lockin;
+    bs_observer_estimate e;
+    int k;
+    (void)state;
+    load_fig6();
+    late = gains;
+    late.latency = 3;
+    assert_int_equal(bs_sim_init(&twin, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    assert_int_equal(bs_sim_init(&reference, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    assert_int_equal(bs_observer_init(&obs, &twin, &late, NULL), BS_OK);
+    for (k = 0; k < 20; ++k) /* a measured start, so that the lock-in holds something */
+        assert_int_equal(bs_observer_step(&obs, &twin, BS_R(10.0), BS_R(1e-6)), BS_OK);
+    assert_int_equal(bs_sim_save(&twin, saved, sizeof saved), BS_OK); /* the reference: the twin's copy */
+    assert_int_equal(bs_sim_restore(&reference, saved, sizeof saved), BS_OK);
+    lockin = obs.meas_a;
+    for (k = 0; k < 40; ++k) {
+        const bs_real a = (bs_real)(14.0 * cos(0.05 * k));
+        assert_int_equal(bs_observer_predict(&obs, &twin, a), BS_OK);
+        assert_int_equal(bs_sim_step_measured(&reference, a), BS_OK);
+        w[k] = bs_sim_sensor(&reference);
+        assert_int_equal(bs_observer_get(&obs, &e), BS_OK);
+        assert_true(e.innovation == BS_R(0.0));
+    }
+    assert_int_equal(bs_sim_hash(&twin), bs_sim_hash(&reference));
+    assert_memory_equal(&lockin, &obs.meas_a, sizeof lockin);
+    before = obs;
+    assert_int_equal(bs_observer_predict(&obs, &twin, (bs_real)NAN), BS_E_ARGUMENT);
+    assert_memory_equal(&before, &obs, sizeof obs);
+    assert_int_equal(bs_sim_hash(&twin), bs_sim_hash(&reference));
+    assert_int_equal(bs_observer_step(&obs, &twin, BS_R(1.0), BS_R(2e-6)), BS_OK);
+    assert_int_equal(bs_observer_get(&obs, &e), BS_OK);
+    assert_true(e.prediction == w[40 - 3]); /* the twin's signal 3 steps before this 41st step */
+}
+
 static void test_init_refuses_what_does_not_fit(void **state)
 {
     static bs_observer_gains bad;
@@ -261,6 +307,7 @@ int main(void)
         cmocka_unit_test(test_design_gives_kalman_gains_and_a_map),
         cmocka_unit_test(test_init_refuses_what_does_not_fit),
         cmocka_unit_test(test_nan_measurement_is_refused_without_change),
+        cmocka_unit_test(test_predict_steps_open_loop_and_keeps_the_delay_line),
         cmocka_unit_test(test_beam_correction_converges_faster_than_open_loop),
         cmocka_unit_test(test_position_tracker_recovers_a_twin_started_off),
         cmocka_unit_test(test_confidence_is_low_where_the_response_is_tiny),

@@ -167,6 +167,21 @@ bs_status bs_observer_init(bs_observer *obs, const bs_sim *sim, const bs_observe
  * bs_sim_step. */
 bs_status bs_observer_step(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_real measurement);
 
+/* One step without a measurement: the sample of y_k was lost (a FIFO
+ * overrun, a sensor error). Advances sim by bs_sim_step_measured(sim,
+ * base_accel), base_accel the caller's best value for the step (e.g.
+ * interpolated between the samples either side of a gap), and the delay
+ * line with it, so that the next measurement meets the twin's prediction of
+ * its own time. No beam correction (the twin runs open loop for the step);
+ * the lock-in's products with y hold, while its reference (an integral of
+ * a over time) and the twin's own products go on, and so does the s
+ * correction from them. The estimate's innovation is 0 and its measurement
+ * the prediction. A base_accel that is not finite is refused with
+ * BS_E_ARGUMENT and nothing changes; a failed twin step returns its status
+ * (nothing changes). Returns BS_OK, BS_E_NULL, BS_E_UNINITIALISED,
+ * BS_E_ARGUMENT or a status of bs_sim_step. */
+bs_status bs_observer_predict(bs_observer *obs, bs_sim *sim, bs_real base_accel);
+
 /* Copies the latest estimate into *estimate. Returns BS_OK, BS_E_NULL or
  * BS_E_UNINITIALISED. */
 bs_status bs_observer_get(const bs_observer *obs, bs_observer_estimate *estimate);

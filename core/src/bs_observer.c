@@ -60,6 +60,11 @@
  *    buried in noise, or a branch where |H| hardly changes with s, makes
  *    it large; a measured |H_m| the branch never reaches, or an excitation
  *    the map was not made for, makes it 1.
+ * A step without a measurement (bs_observer_predict: a sample lost on the
+ * way, e.g. a firmware's FIFO overrun) does all but what needs y: no beam
+ * correction (3), and of the lock-in (4) only the reference and the twin's
+ * own products go on, those with y hold; the s correction (5) goes on from
+ * them, as it would between two measurements.
  */
 #include "bs_observer.h"
 #include "bs_port.h"
@@ -327,9 +332,11 @@ static bs_real mean(const bs_lowpass2 *f)
     return f->stage[1];
 }
 
-/* 4: one step of the lock-in with the aligned samples. */
+/* 4: one step of the lock-in with the aligned samples. Without a
+ * measurement (measured 0) the products with y hold; the reference, an
+ * integral over time, and the twin's own products go on. */
 static void demodulate(bs_observer *obs, bs_real dt, bs_real a, bs_real y, bs_real y_twin, bs_real w_twin,
-                       bs_real e, bs_real power)
+                       bs_real e, bs_real power, int measured)
 {
     const bs_real tau = obs->options.lockin_time;
     const bs_real alpha = dt / tau;
@@ -340,13 +347,15 @@ static void demodulate(bs_observer *obs, bs_real dt, bs_real a, bs_real y, bs_re
     b = obs->quadrature - mean(&obs->ref_b);
     lowpass2(&obs->ref_aa, a * a, alpha);
     lowpass2(&obs->ref_bb, b * b, alpha);
-    lowpass2(&obs->meas_a, y * a, alpha);
-    lowpass2(&obs->meas_b, y * b, alpha);
+    if (measured) {
+        lowpass2(&obs->meas_a, y * a, alpha);
+        lowpass2(&obs->meas_b, y * b, alpha);
+        lowpass2(&obs->innov_sq, e * e, alpha);
+    }
     lowpass2(&obs->twin_a, y_twin * a, alpha);
     lowpass2(&obs->twin_b, y_twin * b, alpha);
     lowpass2(&obs->defl_a, w_twin * a, alpha);
     lowpass2(&obs->defl_b, w_twin * b, alpha);
-    lowpass2(&obs->innov_sq, e * e, alpha);
     lowpass2(&obs->power, power, alpha);
 }
 
@@ -518,7 +527,10 @@ static void correct_position(bs_observer *obs, bs_sim *sim, bs_real interval)
     obs->estimate.s = bs_sim_position(sim);
 }
 
-bs_status bs_observer_step(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_real measurement)
+/* One step, with a measurement (measured 1) or without one: the sample of
+ * y_k was lost, and the step does all but what needs it (the output
+ * injection and the lock-in's products with y). */
+static bs_status observe(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_real measurement, int measured)
 {
     const bs_observer_gains *g;
     bs_status status;
@@ -549,20 +561,32 @@ bs_status bs_observer_step(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs
     if (aligned < 0)
         aligned += BS_OBSERVER_MAX_LATENCY + 1;
 
+    if (!measured)
+        measurement = obs->past_signal[aligned]; /* as if it had been predicted exactly */
     e = measurement - obs->past_signal[aligned];
     obs->estimate.measurement = measurement;
     obs->estimate.prediction = obs->past_signal[aligned];
     obs->estimate.innovation = e;
-    if (obs->options.correct_beam)
+    if (measured && obs->options.correct_beam)
         correct_beam(sim, g, e);
     demodulate(obs, dt, obs->past_accel[aligned], measurement, obs->past_signal[aligned],
-               obs->past_deflection[aligned], e, twin_power(sim));
+               obs->past_deflection[aligned], e, twin_power(sim), measured);
     if (obs->steps % POSITION_EVERY == 0) {
         estimate_position(obs, sim, dt);
         correct_position(obs, sim, dt * (bs_real)POSITION_EVERY);
     }
     obs->estimate.s = bs_sim_position(sim);
     return BS_OK;
+}
+
+bs_status bs_observer_step(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_real measurement)
+{
+    return observe(obs, sim, base_accel, measurement, 1);
+}
+
+bs_status bs_observer_predict(bs_observer *obs, bs_sim *sim, bs_real base_accel)
+{
+    return observe(obs, sim, base_accel, BS_R(0.0), 0);
 }
 
 bs_status bs_observer_get(const bs_observer *obs, bs_observer_estimate *estimate)

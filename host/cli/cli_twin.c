@@ -506,6 +506,14 @@ static int open_measured(measured_file *m, const char *path, double dt)
         return -1;
     }
     while ((status = read_row(m, &t, &a, &y, &s)) == 0) {
+        /* row k holds t = k dt: a missing, repeated or misplaced row is a gap
+         * or another rate, and the twin would run on a shifted signal */
+        const double expected = (double)(m->rows + 1) * dt;
+        if (!(fabs(t - expected) <= 0.01 * dt)) {
+            cli_error("%s:%ld: t = %.10g s, expected %.10g s (row %llu at dt = %g s): a gap, a repeated row or "
+                      "another sample rate", path, m->line, t, expected, (unsigned long long)(m->rows + 1), dt);
+            return -1;
+        }
         m->rows += 1;
         m->y_sq += y * y;
     }

@@ -499,6 +499,8 @@ git diff --quiet HEAD -- core port configs tests/embedded 2>/dev/null ||
     commit="$commit with uncommitted changes to the measured sources"
 fig6_flash_reads=$(m4f fig6 subspace-whole scene flash)
 fig6_ram_reads=$(m4f fig6 subspace-ram-whole scene flash)
+# the last section, "Twin firmware", is host/reports/twin_firmware_report.sh's: kept as it is
+twin_section=$(sed -n '/^## Twin firmware$/,$p' "$OUT" 2>/dev/null || :)
 cat > "$OUT" <<EOF
 # The core on Cortex-M
 
@@ -617,4 +619,5 @@ more code than its switches removed.
 |---|---|---|---|---|---|---|---|---|---|---|---|
 $level_rows
 EOF
+[ -z "$twin_section" ] || printf '\n%s\n' "$twin_section" >> "$OUT"
 echo "embedded_report: wrote $OUT" >&2

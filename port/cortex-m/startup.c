@@ -6,11 +6,14 @@
  * semihosting, then exit(main()): stdio is flushed and main's return value becomes QEMU's
  * exit status.
  *
- * Every other exception is a fault here (nothing enables interrupts): the handler prints
- * "*** CPU fault: ..." and makes QEMU exit with status 99. It talks to the semihosting host
- * directly instead of calling exit(): newlib picks SYS_EXIT or SYS_EXIT_EXTENDED from a feature
- * probe done in initialise_monitor_handles, and a fault before that probe sent plain SYS_EXIT,
- * which QEMU turns into exit status 0 - a crashed test reported as a pass.
+ * Every other exception is a fault here: the handler prints "*** CPU fault: ..." and makes
+ * QEMU exit with status 99. It talks to the semihosting host directly instead of calling
+ * exit(): newlib picks SYS_EXIT or SYS_EXIT_EXTENDED from a feature probe done in
+ * initialise_monitor_handles, and a fault before that probe sent plain SYS_EXIT, which QEMU
+ * turns into exit status 0 - a crashed test reported as a pass.
+ *
+ * The one interrupt an image may enable is SysTick, by defining SysTick_Handler (weak here:
+ * the fault handler; port/cortex-m/twin/twin_clock_systick.c defines one).
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -106,6 +109,9 @@ __attribute__((noreturn)) void Reset_Handler(void)
     exit(main());
 }
 
+/* An image that enables SysTick defines it; until then a SysTick exception is a fault. */
+void SysTick_Handler(void) __attribute__((weak, alias("fault_entry")));
+
 typedef void (*cm_vector)(void);
 
 /* The 16 system exceptions; no external interrupts are enabled, so none are listed. */
@@ -122,5 +128,5 @@ __attribute__((section(".vectors"), used)) const cm_vector cm_vectors[16] = {
     fault_entry,  /* DebugMonitor */
     0,            /* reserved */
     fault_entry,  /* PendSV */
-    fault_entry,  /* SysTick */
+    SysTick_Handler,
 };

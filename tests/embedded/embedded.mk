@@ -7,6 +7,7 @@
 #                          harness self-test and the core symbol check of each image
 #   make embedded-report   flash, RAM, stack, instructions and estimated cycles
 #                          per step, backlog of whole runs -> docs/embedded.md
+#                          (and make twin-firmware-report: the twin firmware, tests/embedded/twin.mk)
 #   make TARGET=cortex-m4f [SCENE=fig6] [REAL=float] [STEPS=N] [run]
 #                          one image of tests/embedded/scene_run.c (and its QEMU run)
 #
@@ -104,8 +105,12 @@ $(foreach c,$(EMB_HOST_TWINS),$(eval $(call emb__host,$(call emb_word,$c,1),$(ca
 EMB_LONG_PAIRS := $(foreach c,$(EMB_LONG_CHECKS),$(call emb_word,$c,1):$(call cm_elf,long-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1)):$(EMB_HOST)/$(call emb_word,$c,2).$(call emb_word,$c,3).$(call emb_word,$c,4))
 EMB_CHECK_PAIRS := $(foreach c,$(EMB_CHECKS),$(call emb_word,$c,1):$(call cm_elf,check-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1)):$(EMB_HOST)/$(call emb_word,$c,2).$(call emb_word,$c,3).$(call emb_word,$c,4))
 
-embedded-test: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_CHECK_PAIRS),$(call emb_word,$p,2) $(call emb_word,$p,3)))
+# The twin firmware (port/cortex-m/twin): twin-firmware-test, twin-firmware-report.
+include tests/embedded/twin.mk
+
+embedded-test: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_CHECK_PAIRS),$(call emb_word,$p,2) $(call emb_word,$p,3)) $(TWIN_TEST_DEPS))
 	$(if $(CM_TOOLS_OK),@sh tests/check_embedded.sh $(EMB_CHECK_PAIRS),@echo "$(CM_TOOLS_MSG)")
+	$(if $(CM_TOOLS_OK),@$(MAKE) --no-print-directory twin-firmware-test)
 	$(if $(CM_TOOLS_OK),@CM_BUILD=$(CM_BUILD) sh tests/qemu/selftest.sh)
 	$(if $(CM_TOOLS_OK),@set -e; $(foreach c,$(EMB_CHECKS),NM=arm-none-eabi-nm sh tests/check_core_symbols.sh \
 	    $(call emb_word,$c,3) $(CM_BUILD)/$(call emb_word,$c,1)/check-$(call emb_word,$c,2)-$(call emb_word,$c,3).obj/core/src/*.o;))
@@ -132,6 +137,7 @@ embedded-report-images: $(foreach c,$(EMB_COST_SPECS),$(call emb_word,$c,5))
 embedded-report:
 	$(MAKE) --no-print-directory -j2 embedded-report-images
 	CM_OPT='$(CM_OPT)' CM_BUILD='$(CM_BUILD)' sh host/reports/embedded_report.sh $(EMB_COST_SPECS)
+	$(MAKE) --no-print-directory twin-firmware-report
 .PHONY: embedded-report embedded-report-images
 
 

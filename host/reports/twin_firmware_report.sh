@@ -1,0 +1,289 @@
+#!/bin/sh
+# twin_firmware_report.sh CSV TARGET:SCENE:VARIANT:ELF... - the cost of the twin
+# firmware (port/cortex-m/twin) on a whole recorded plant run under QEMU, written as the
+# section "Twin firmware" of docs/embedded.md (replacing it, or appended). Run through
+# `make twin-firmware-report` (tests/embedded/twin.mk builds the images and the stream;
+# about 10 minutes on 2 cores). CSV is the plant run the images' stream was made from
+# (its last row's s_true: the plant's s at the end).
+#
+# Each image is the firmware built with TWIN_COST=1: the simulated clock runs the
+# producer once per twin step (one sample per step, never a queue: the images measure,
+# the queue is computed here), and every producer call and every observer step is
+# bracketed by bs_board_mark(). VARIANT: flash (constants in flash) or ram (scene and
+# gains copied to RAM, -mslow-flash-data). Per image, from tests/qemu/count.sh (Cortex-M4F
+# with the cycle estimate, CM_CYCLES=1):
+#   twin step   the bracket of bs_observer_step (the twin's step and the observer's
+#               correction): instructions, estimated cycles optimistic (P = 1, W = 0) and
+#               pessimistic (P = 3, W = 5), as docs/embedded.md, "The cycle model"
+#   producer    the bracket of twin_produce (one sample into the FIFO; a block from the
+#               source every TWIN_BLOCK_SAMPLES, over semihosting: its bkpt costs nothing)
+#   per sample  everything the firmware executes from one twin step's end to the next
+#               (producer, FIFO pop, bookkeeping, the 10 Hz report's printf), plus 24
+#               cycles for the SysTick exception's entry and return (12 each, Cortex-M4
+#               TRM), which the simulated clock's function call does not have
+#   backlog     of samples waiting in the FIFO at clock f: the Lindley recursion
+#               W = max(0, W + c_k - B), c_k the per-sample cost (pessimistic; on the M7,
+#               without a cycle model, instructions), B = f x dt; largest W as ceil(W / B)
+#               samples, and the first sample at which it exceeds TWIN_FIFO_SAMPLES (the
+#               firmware's FIFO: from there on the overrun policy drops samples)
+#   memory      from the image's map and symbols: code of the core and of the firmware,
+#               constants (the scene, the gains), RAM of each static object, the image's
+#               totals (arm-none-eabi-size; newlib's printf is most of the rest), and the
+#               deepest stack of the main loop (painted; the 10 Hz printf excluded)
+# Env: CM_OPT, CM_BUILD (from make), TWIN_FIFO_SAMPLES (1024), OUT (docs/embedded.md).
+set -eu
+: "${CM_OPT:?twin_firmware_report: CM_OPT unset (run it through make twin-firmware-report)}"
+OUT=${OUT:-docs/embedded.md}
+FIFO=${TWIN_FIFO_SAMPLES:-1024}
+csv=$1
+shift
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+sh tests/qemu/build-plugin.sh >&2
+
+DT=0.00002                      # the stream's sample period [s] (fig6)
+CLOCKS="168 200 240 280 320 360 400 480" # M4F clocks of the backlog table [MHz]
+ENTRY=24                        # SysTick entry + return [cycles]
+
+# The summary of one image's counted run -> "NAME VALUE" lines
+SUMMARY_AWK='
+    function lindley(j, cost) {
+        w[j] += cost - budget[j]; if (w[j] < 0) w[j] = 0
+        if (w[j] > most[j]) most[j] = w[j]
+    }
+    BEGIN { n_clock = split(clocks, clock, " "); for (j = 1; j <= n_clock; ++j) budget[j] = clock[j] * dt * 1e6
+            if (!cycles) { n_clock = 1; clock[1] = mhz; budget[1] = mhz * dt * 1e6 } }
+    /^\[insn\] total/ { next }
+    /^\[insn\] [0-9]+/ {
+        ++marks
+        if (NF >= 8) { opt = $4 + $6; pess = $4 + 3 * $6 + 5 * $8 } else { opt = pess = $2 }
+        if (marks > 1) { acc_insn += $2; acc += pess }  # the first interval is the start-up
+        if (marks % 4 == 2) { ++np; p_insn += $2; p_pess += pess; if (pess > p_worst) p_worst = pess }
+        if (marks % 4 == 0) {
+            ++n; s_insn += $2; s_opt += opt; s_pess += pess
+            if ($2 > s_worst_insn) s_worst_insn = $2
+            if (opt > s_worst_opt) s_worst_opt = opt
+            if (pess > s_worst_pess) s_worst_pess = pess
+            cost = acc + (cycles ? entry : 0)
+            sample += cost; sample_insn += acc_insn
+            if (cost > sample_worst) sample_worst = cost
+            if (cost > budget[1]) ++over
+            for (j = 1; j <= n_clock; ++j) lindley(j, cost)
+            if (!overflow && w[1] > fifo * budget[1]) overflow = n
+            acc = 0; acc_insn = 0
+        }
+        next
+    }
+    /^end status/ { for (i = 2; i < NF; ++i) end[$i] = $(i + 1); endline = $0 }
+    { print > logfile }
+    END {
+        if (!n) exit 1
+        printf "samples %d\nstep_insn %.0f\nstep_worst_insn %d\nproducer_insn %.1f\n", n, s_insn / n, s_worst_insn, p_insn / np
+        if (cycles)
+            printf "step_opt %.0f\nstep_worst_opt %d\nstep_pess %.0f\nstep_worst_pess %d\nproducer_pess %.1f\n",
+                s_opt / n, s_worst_opt, s_pess / n, s_worst_pess, p_pess / np
+        printf "sample_insn %.0f\nsample %.0f\nsample_worst %d\nover %d\noverflow %d\n", sample_insn / n, sample / n, sample_worst, over, overflow
+        for (j = 1; j <= n_clock; ++j) {
+            q = int(most[j] / budget[j]); if (q * budget[j] < most[j]) ++q
+            time = most[j] / budget[j] * dt
+            printf "backlog_%d %d\nbacklog_time_%d %s\n", clock[j], q, clock[j], time < 1 ? sprintf("%.1f ms", time * 1e3) : sprintf("%.1f s", time)
+        }
+        printf "status %s\nstack %s\ns %s\nhash %s\n", end["status"], end["stack"], end["s"], end["hash"]
+    }'
+val() { awk -v name="$2" '$1 == name { sub(/^[^ ]+ /, ""); print; found = 1; exit } END { if (!found) print "-" }' "$1"; }
+
+# sizes MAP ELF -> "core_code twin_code scene gains": code (.text) of the core and the
+# firmware's own files, constants of the scene and the gains
+sizes() {
+    awk '
+        function hex(text,    i, value) {
+            value = 0
+            for (i = 3; i <= length(text); ++i)
+                value = value * 16 + index("0123456789abcdef", tolower(substr(text, i, 1))) - 1
+            return value
+        }
+        function add(name, size, object) {
+            if (object ~ /\/core\/src\// && name ~ /^\.text/) core += size
+            else if (object ~ /\/twin\/twin_/ && name ~ /^\.text/) twin += size
+            else if (name == ".rodata.bs_compiled_scene") scene += size
+            else if (name == ".rodata.twin_gains") gains += size
+        }
+        /^ \.[A-Za-z_.0-9]+$/ { pending = $1; next }
+        pending != "" && NF == 3 && $1 ~ /^0x/ { add(pending, hex($2), $3); pending = ""; next }
+        /^ \.[A-Za-z_.0-9]+ +0x/ && NF == 4 { add($1, hex($3), $4) }
+        { pending = "" }
+        END { printf "%d %d %d %d\n", core, twin, scene, gains }' "$1"
+}
+# symbol_size ELF NAME -> bytes (0 if absent)
+symbol_size() {
+    arm-none-eabi-nm -S --radix=d "$1" | awk -v name="$2" '$4 == name { print $2 + 0; found = 1; exit }
+        END { if (!found) print 0 }'
+}
+
+n=0
+for spec in "$@"; do
+    n=$((n + 1))
+    echo "$spec" > "$TMP/spec-$n"
+done
+word() { cut -d: -f"$2" "$TMP/spec-$1"; }
+run_job() {
+    j=$1 target=$(word "$1" 1) elf=$(word "$1" 4)
+    echo "twin_firmware_report: $target $(word "$1" 2) $(word "$1" 3)" >&2
+    if [ "$target" = cortex-m4f ]; then cycles=1 mhz=168; else cycles= mhz=480; fi
+    { status=0
+      CM_CYCLES=$cycles sh tests/qemu/count.sh "$elf" "$target" 3600 || status=$?
+      echo "$status" > "$TMP/job-$j.status"; } |
+        awk -v clocks="$CLOCKS" -v dt=$DT -v entry=$ENTRY -v fifo="$FIFO" -v cycles="${cycles:-0}" -v mhz=$mhz \
+            -v logfile="$TMP/job-$j.log" "$SUMMARY_AWK" > "$TMP/job-$j.sum" || :
+}
+# two lanes, the M7 (no cycle estimate: faster) with the shorter one
+j=1
+while [ "$j" -le "$n" ]; do echo "$j" >> "$TMP/lane-$((j % 2 + 1))"; j=$((j + 1)); done
+for lane in 1 2; do
+    [ -f "$TMP/lane-$lane" ] || continue
+    ( while read -r j; do run_job "$j"; done < "$TMP/lane-$lane" ) &
+done
+wait
+j=1
+while [ "$j" -le "$n" ]; do
+    if [ "$(cat "$TMP/job-$j.status" 2>/dev/null)" != 0 ] || [ "$(val "$TMP/job-$j.sum" status)" != 0 ]; then
+        echo "twin_firmware_report: $(cat "$TMP/spec-$j") failed:" >&2
+        tail -n 5 "$TMP/job-$j.log" >&2 2>/dev/null || :
+        exit 1
+    fi
+    j=$((j + 1))
+done
+
+job() { # job TARGET SCENE VARIANT -> number
+    _k=1
+    while [ "$_k" -le "$n" ]; do
+        [ "$(cut -d: -f1-3 "$TMP/spec-$_k")" != "$1:$2:$3" ] || { echo "$_k"; return; }
+        _k=$((_k + 1))
+    done
+}
+# The constants in RAM change the cost, not the results: the same end state
+j=1
+while [ "$j" -le "$n" ]; do
+    if [ "$(word "$j" 3)" = ram ]; then
+        twin=$(job "$(word "$j" 1)" "$(word "$j" 2)" flash)
+        [ -z "$twin" ] || [ "$(val "$TMP/job-$j.sum" hash)" = "$(val "$TMP/job-$twin.sum" hash)" ] || {
+            echo "twin_firmware_report: $(cat "$TMP/spec-$j") ends in another state than its flash variant" >&2
+            exit 1
+        }
+    fi
+    j=$((j + 1))
+done
+
+# --- tables ---------------------------------------------------------------------
+s_plant=$(tail -n 1 "$csv" | cut -d, -f4)
+cost_rows="" memory_rows="" backlog_rows=""
+j=1
+while [ "$j" -le "$n" ]; do
+    target=$(word "$j" 1) scene=$(word "$j" 2) variant=$(word "$j" 3) elf=$(word "$j" 4) s=$TMP/job-$j.sum
+    if [ "$target" = cortex-m4f ]; then budget=3360 unit= mhz=168; else budget=9600 unit=" (insn)" mhz=480; fi
+    cost_rows="$cost_rows| $scene | $target | $variant | $(val "$s" samples) | $(val "$s" step_insn) | $(val "$s" step_worst_insn) | $(val "$s" step_opt) | $(val "$s" step_worst_opt) | $(val "$s" step_pess) | $(val "$s" step_worst_pess) | $(val "$s" producer_insn) | $(val "$s" producer_pess) | $(val "$s" sample_insn) | $(val "$s" sample)$unit | $budget | $(val "$s" over) | $(val "$s" backlog_$mhz) ($(val "$s" backlog_time_$mhz)) | $(awk -v k="$(val "$s" overflow)" -v dt=$DT 'BEGIN { if (k > 0) printf "%.3f s", k * dt; else print "never" }') | $(val "$s" s) |
+"
+    set -- $(sizes "$(echo "$elf" | sed 's/\.elf$/.map/')")
+    ram_copy=$(( $(symbol_size "$elf" scene_in_ram) + $(symbol_size "$elf" gains_in_ram) ))
+    set -- "$@" $(arm-none-eabi-size -A "$elf" | awk '$1 == ".text" || $1 == ".ARM.exidx" { flash += $2 } $1 == ".data" { flash += $2; ram += $2 } $1 == ".bss" { ram += $2 } END { print flash, ram }')
+    memory_rows="$memory_rows| $scene | $target | $variant | $1 | $2 | $3 | $4 | $(symbol_size "$elf" twin) | $(symbol_size "$elf" obs) | $(symbol_size "$elf" fifo) | $(symbol_size "$elf" block) | $ram_copy | $5 | $6 | $(val "$s" stack) |
+"
+    if [ "$target" = cortex-m4f ]; then
+        row="| $scene | $variant |"
+        for c in $CLOCKS; do row="$row $(val "$s" backlog_$c) |"; done
+        backlog_rows="$backlog_rows$row
+"
+    fi
+    j=$((j + 1))
+done
+clock_head="| scene | variant |" clock_rule="|---|---|"
+for c in $CLOCKS; do clock_head="$clock_head $c MHz ($((c * 20)) cycles) |"; clock_rule="$clock_rule---|"; done
+
+fig6=$TMP/job-$(job cortex-m4f fig6 flash).sum
+one=$TMP/job-$(job cortex-m4f fig6_1mode ram).sum
+# the slowest listed clock at which a variant's largest backlog fits the FIFO
+fits() {
+    for c in $CLOCKS; do
+        [ "$(val "$1" backlog_$c)" -gt "$FIFO" ] || { echo "$c MHz"; return; }
+    done
+    echo "none of the clocks listed"
+}
+commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+git diff --quiet HEAD -- core port configs tests/embedded 2>/dev/null ||
+    commit="$commit with uncommitted changes to the measured sources"
+
+cat > "$TMP/section" <<EOF
+## Twin firmware
+
+Produced by \`make twin-firmware-report\` (host/reports/twin_firmware_report.sh; also run by
+\`make embedded-report\`) on $(date -u +%Y-%m-%d), commit $commit, with the same compiler,
+\`$CM_OPT\` and QEMU as above. The firmware is port/cortex-m/twin (its README: what it does, the
+producer, the overrun policy): a float twin of the compiled scene and the observer
+(core/include/bs_observer.h) with the constants of \`beamslider twin-gains\`, fed one sample per
+dt through a FIFO of $FIFO samples. The stream: fig6's whole 60 s run as the plant
+(\`beamslider twin-plant configs/fig6.ini --snr 40 --bits 12 --seed 1\`, float build;
+3 000 000 samples), read over semihosting. The fig6_1mode twin runs on the same stream (the
+plant has five modes, the twin one). The images measure: one sample per twin step, never a
+queue; the queue a real-time producer would build is computed from the measured costs
+(Lindley recursion, script header). Cycles are the estimates of "The cycle model" above; the M7
+row gives instructions, which stand in for cycles in its backlog (480 MHz, budget 9600).
+
+**Cost per sample** at dt = 2e-5 s. "Twin step": the bracket around \`bs_observer_step\` (the
+twin's step and the observer's correction). "Producer": the bracket around \`twin_produce\`
+(the interrupt's work). "Per sample": all the firmware executes per sample (producer, FIFO,
+bookkeeping, the 10 Hz report), plus 24 cycles of SysTick entry and return. Steps over budget,
+the largest backlog and the first FIFO overflow at 168 MHz (M7: 480 MHz), from the per-sample
+cost (pessimistic). Last column: the twin's s at 60 s (the plant's: $s_plant; the ram variants
+end in the same state as the flash ones, bit for bit, which the script checks).
+
+| twin scene | target | constants | samples | twin step: mean insn | worst insn | mean cycles: optimistic | worst: optimistic | mean cycles: pessimistic | worst: pessimistic | producer: mean insn | producer: mean cycles (pess.) | per sample: mean insn | per sample: mean cycles (pess.) | budget | samples over budget | largest backlog [samples] | FIFO of $FIFO full at | s at 60 s |
+|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|
+$cost_rows
+**Not in real time on the 168 MHz M4F.** The twin step alone takes $(val "$fig6" step_pess) estimated
+cycles per sample on average (pessimistic; $(val "$fig6" step_opt) optimistic) where a sample period
+has 3360: the plain fig6 step (its whole-run mean is in "Whole runs" above) plus the observer's
+correction, on a twin that follows the plant. The FIFO fills within
+$(awk -v k="$(val "$fig6" overflow)" -v dt=$DT 'BEGIN { printf "%.0f ms", k * dt * 1e3 }') of the stream and the backlog then grows for
+the whole run (largest: $(val "$fig6" backlog_168) samples, $(val "$fig6" backlog_time_168)). From
+there on the firmware's overrun policy holds: samples dropped and counted, the twin stepped
+through each gap without measurement, its time the plant's but falling ever further behind
+(port/cortex-m/twin/README.md, "Overrun policy"; \`make test\` runs it at a stated
+$(sed -n 's/^TWIN_OVERLOAD_CYCLES := //p' tests/embedded/twin.mk) cycles per step). What would keep pace, measured: the largest backlog
+over the whole stream against the clock of an M4-class core (the same cycle estimate; clock x dt
+cycles per sample; a backlog over $FIFO samples overflows this firmware's FIFO):
+
+$clock_head
+$clock_rule
+$backlog_rows
+The backlog fits the FIFO from $(fits "$fig6") with the five-mode twin (constants in flash)
+and from $(fits "$one") with the one-mode twin and its constants in RAM. The mean
+alone needs $(awk -v c="$(val "$fig6" sample)" -v dt=$DT 'BEGIN { printf "%.0f", c / dt / 1e6 }') MHz (fig6, flash) and $(awk -v c="$(val "$one" sample)" -v dt=$DT 'BEGIN { printf "%.0f", c / dt / 1e6 }') MHz
+(fig6_1mode, RAM); the bursts (contact steps of the active-set solve, above) add the rest. So: a
+faster part (a 480 MHz Cortex-M7 runs the fig6 twin in $(val "$TMP/job-$(job cortex-m7 fig6 flash).sum" sample) instructions per sample against
+9600 cycles), or the one-mode scene with its constants in RAM on an M4 near the clock the
+table gives, or a larger dt (docs/porting.md, "Time step and the clock budget"). The one-mode
+twin is another model, not only a cheaper one: on the five-mode plant its s ends
+$(awk -v a="$(val "$one" s)" -v b="$s_plant" 'BEGIN { d = a - b; printf "%.3f", d < 0 ? -d : d }') from the plant's, the five-mode twin's
+$(awk -v a="$(val "$fig6" s)" -v b="$s_plant" 'BEGIN { d = a - b; printf "%.4f", d < 0 ? -d : d }').
+
+**Memory** (bytes). Code: .text of the core and of the firmware's files (port/cortex-m/twin);
+constants: the scene and the gains in flash; RAM: the twin (\`bs_sim\`), the observer (three
+delay lines of 257 values), the FIFO ($FIFO samples of 12 bytes), the producer's block, the
+copies of scene and gains in the ram variant; the image's totals include newlib (printf with
+floats, semihosting), which a product replaces. Stack: the deepest use of the main loop
+(the twin step and the producer, called from it; the 10 Hz printf excluded), to which an
+interrupt adds its exception frame (104 bytes with the FPU's lazy context).
+
+| twin scene | target | constants | core code | firmware code | scene | gains | twin (bs_sim) | observer | FIFO | block | scene + gains in RAM | image flash | image RAM (.data + .bss) | stack |
+|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|
+$memory_rows
+EOF
+
+# Replace the section (from its heading to the next "## " or the end) or append it
+awk -v section="$TMP/section" '
+    /^## Twin firmware$/ { skip = 1; while ((getline line < section) > 0) print line; done = 1; next }
+    skip && /^## / { skip = 0 }
+    !skip { print }
+    END { if (!done) { print ""; while ((getline line < section) > 0) print line } }' "$OUT" > "$TMP/page"
+cp "$TMP/page" "$OUT"
+echo "twin_firmware_report: wrote the section \"Twin firmware\" of $OUT" >&2

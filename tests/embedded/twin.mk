@@ -1,0 +1,124 @@
+# tests/embedded/twin.mk - the twin firmware (port/cortex-m/twin) under QEMU and on
+# the host, included by tests/embedded/embedded.mk (which sets EMB_CONFIG, EMB_HOST,
+# emb_config_h, emb_word and includes port/cortex-m/cortex-m.mk).
+#
+#   make twin-firmware-test    (part of `make embedded-test`, ~15 s when built) a 1 s
+#                              fig6 stream through the M4F image and its host build, bit
+#                              for bit (tests/check_embedded.sh), at a twin step that keeps
+#                              pace and at one that does not (the overrun policy); the
+#                              former against `beamslider twin` on the same CSV, and the
+#                              SysTick build under QEMU with -icount (tests/check_twin.sh)
+#   make twin-firmware-report  the firmware's cost on a whole 60 s fig6 stream ->
+#                              docs/embedded.md, "Twin firmware" (~10 min;
+#                              host/reports/twin_firmware_report.sh; also run by
+#                              `make embedded-report`)
+#
+# Data, all generated in $(TWIN_DIR) (nothing committed): the plant run
+# fig6-T.csv (`beamslider twin-plant`, float build, noise 40 dB below each signal,
+# 12 bits, seed 1, T seconds), its stream fig6-T.stream (twin_pack), and the
+# observer's constants for a twin scene on that stream, SCENE-fig6-T/twin_gains.h
+# (`beamslider twin-gains` with the noise the CSV states, as `beamslider twin`
+# designs them).
+TWIN_SRC_DIR := port/cortex-m/twin
+TWIN_DIR := $(BUILD)/twin
+TWIN_CLI := $(BUILD)/float/beamslider
+TWIN_PACK := $(TWIN_DIR)/twin_pack
+TWIN_PLANT_ARGS := --snr 40 --bits 12 --seed 1
+# The simulated clock's stated twin step in the two check images [cycles; a sample
+# period is 3360]: one that keeps pace, and the firmware's mean over the whole 60 s
+# stream as measured (pessimistic estimate, docs/embedded.md "Twin firmware")
+TWIN_PACE_CYCLES := 3000
+TWIN_OVERLOAD_CYCLES := 7200
+# The SysTick build under QEMU: SysTick at 25 MHz, reload 499 (1/dt = 50 kHz of QEMU's
+# virtual time), and -icount shift=3: 8 ns of virtual time per instruction, i.e. a
+# core that executes 125 million instructions a second
+TWIN_ICOUNT := -icount shift=3,align=off,sleep=off
+
+ifneq ($(OBJ),$(BUILD)/float)
+# the float CLI, whatever REAL this make has (the top-level Makefile builds it when REAL=float)
+$(TWIN_CLI): .force
+	@$(MAKE) --no-print-directory REAL=float $@
+endif
+
+$(TWIN_PACK): $(TWIN_SRC_DIR)/twin_pack.c $(TWIN_SRC_DIR)/twin_stream.h
+	@mkdir -p $(dir $@)
+	$(CC) -O2 $(BASE_CFLAGS) -I$(TWIN_SRC_DIR) -o $@ $< -lm
+
+$(TWIN_DIR)/fig6-%s.csv: configs/fig6.ini configs/mssp2023.ini $(TWIN_CLI)
+	@mkdir -p $(dir $@)
+	$(TWIN_CLI) twin-plant configs/fig6.ini $(TWIN_PLANT_ARGS) --t-end $* --out $@ > $@.json
+$(TWIN_DIR)/%.stream: $(TWIN_DIR)/%.csv $(TWIN_PACK)
+	$(TWIN_PACK) $< $@
+
+# the noise a CSV states: twin_noise CSV KEY (noise or accel_noise)
+twin_noise = $$(sed -n 's/^\# $2 = \([^ ]*\) .*/\1/p' $1)
+# $(TWIN_DIR)/SCENE-STREAM/twin_gains.h: the observer's constants of twin scene SCENE for STREAM
+$(TWIN_DIR)/%/twin_gains.h: $(TWIN_CLI)
+	@mkdir -p $(dir $@)
+	@set -e; scene=$(word 1,$(subst -, ,$*)); csv=$(TWIN_DIR)/$(patsubst $(word 1,$(subst -, ,$*))-%,%,$*).csv; \
+	    $(TWIN_CLI) twin-gains configs/$$scene.ini --noise $(call twin_noise,$$csv,noise) \
+	        --accel-noise $(call twin_noise,$$csv,accel_noise) --name twin_gains > $@.tmp && mv $@.tmp $@
+$(TWIN_DIR)/fig6-fig6-1s/twin_gains.h: $(TWIN_DIR)/fig6-1s.csv configs/fig6.ini
+$(TWIN_DIR)/fig6-fig6-60s/twin_gains.h: $(TWIN_DIR)/fig6-60s.csv configs/fig6.ini
+$(TWIN_DIR)/fig6_1mode-fig6-60s/twin_gains.h: $(TWIN_DIR)/fig6-60s.csv configs/fig6_1mode.ini
+
+TWIN_COMMON_SRC := $(TWIN_SRC_DIR)/twin_main.c $(TWIN_SRC_DIR)/twin_fifo.c
+# twin_flags SCENE REAL STREAM EXTRA: the compile flags of a twin image or host build
+twin_flags = -fno-tree-loop-distribute-patterns -I$(EMB_CONFIG)/$1.$2.subspace -Icore/include -Icore/src -I. \
+             -I$(TWIN_SRC_DIR) -I$(TWIN_DIR)/$1-$3 -DTWIN_STREAM=\"$(TWIN_DIR)/$3.stream\" $4
+# $(call twin_image,NAME,TARGET,SCENE,REAL,STREAM,CLOCK,EXTRA): cm_image of the firmware
+# (CLOCK: sim or systick) on the semihosting source
+define twin__image
+$(call cm_image,$1,$2,$(TWIN_COMMON_SRC) $(TWIN_SRC_DIR)/twin_source_semihost.c $(TWIN_SRC_DIR)/twin_clock_$6.c \
+    $(CORE_SRC),-Iport/embedded $(call twin_flags,$3,$4,$5,$7))
+$$(CM_OBJS_$2_$1): $(call emb_config_h,$3,$4,subspace) $(TWIN_DIR)/$3-$5/twin_gains.h
+endef
+twin_image = $(eval $(call twin__image,$1,$2,$3,$4,$5,$6,$7))
+# $(call twin_host,NAME,SCENE,STREAM,EXTRA): $(EMB_HOST)/NAME, the same firmware built for
+# the host (stdio source, simulated clock, the no-op board of tests/embedded)
+define twin__host
+$(EMB_HOST)/$1: $(TWIN_COMMON_SRC) $(TWIN_SRC_DIR)/twin_source_stdio.c $(TWIN_SRC_DIR)/twin_clock_sim.c \
+        $(wildcard $(TWIN_SRC_DIR)/*.h) tests/embedded/bs_board_host.c $(CORE_SRC) $(wildcard core/*/*.h) \
+        configs/$2.h $(call emb_config_h,$2,float,subspace) $(TWIN_DIR)/$2-$3/twin_gains.h
+	@mkdir -p $$(dir $$@)
+	$$(CC) -O2 $$(BASE_CFLAGS) -Iport/host -Iport/cortex-m $(call twin_flags,$2,float,$3,$4) -o $$@ \
+	    $(TWIN_COMMON_SRC) $(TWIN_SRC_DIR)/twin_source_stdio.c $(TWIN_SRC_DIR)/twin_clock_sim.c \
+	    tests/embedded/bs_board_host.c $(CORE_SRC) -lm
+endef
+twin_host = $(eval $(call twin__host,$1,$2,$3,$4))
+
+# --- make test ---------------------------------------------------------------------
+$(call twin_image,twin-pace,cortex-m4f,fig6,float,fig6-1s,sim,-DTWIN_STEP_CYCLES=$(TWIN_PACE_CYCLES))
+$(call twin_image,twin-overload,cortex-m4f,fig6,float,fig6-1s,sim,-DTWIN_STEP_CYCLES=$(TWIN_OVERLOAD_CYCLES))
+$(call twin_image,twin-systick,cortex-m4f,fig6,float,fig6-1s,systick,)
+$(call twin_host,twin-pace,fig6,fig6-1s,-DTWIN_STEP_CYCLES=$(TWIN_PACE_CYCLES))
+$(call twin_host,twin-overload,fig6,fig6-1s,-DTWIN_STEP_CYCLES=$(TWIN_OVERLOAD_CYCLES))
+TWIN_CHECK_PAIRS := cortex-m4f:$(call cm_elf,twin-pace,cortex-m4f):$(EMB_HOST)/twin-pace \
+                    cortex-m4f:$(call cm_elf,twin-overload,cortex-m4f):$(EMB_HOST)/twin-overload
+TWIN_TEST_DEPS := $(foreach p,$(TWIN_CHECK_PAIRS),$(call emb_word,$p,2) $(call emb_word,$p,3)) \
+                  $(call cm_elf,twin-systick,cortex-m4f) $(TWIN_DIR)/fig6-1s.stream $(TWIN_CLI)
+twin-firmware-test: $(if $(CM_TOOLS_OK),$(TWIN_TEST_DEPS))
+	$(if $(CM_TOOLS_OK),@sh tests/check_embedded.sh $(TWIN_CHECK_PAIRS),@echo "$(CM_TOOLS_MSG)")
+	$(if $(CM_TOOLS_OK),@TWIN_ICOUNT='$(TWIN_ICOUNT)' sh tests/check_twin.sh $(TWIN_CLI) configs/fig6.ini \
+	    $(TWIN_DIR)/fig6-1s.csv $(EMB_HOST)/twin-pace $(call cm_elf,twin-systick,cortex-m4f))
+
+# --- cost (make twin-firmware-report) ----------------------------------------------
+# the whole 60 s stream, every producer call and observer step bracketed (TWIN_COST=1);
+# twin scenes fig6 and fig6_1mode, constants in flash and in RAM, and fig6 on the M7
+TWIN_RAM_FLAGS := -DTWIN_CONSTANTS_IN_RAM=1 -mslow-flash-data
+$(foreach s,fig6 fig6_1mode,\
+    $(call twin_image,twin-cost-$s,cortex-m4f,$s,float,fig6-60s,sim,-DTWIN_COST=1)\
+    $(call twin_image,twin-cost-$s-ram,cortex-m4f,$s,float,fig6-60s,sim,-DTWIN_COST=1 $(TWIN_RAM_FLAGS)))
+$(call twin_image,twin-cost-fig6,cortex-m7,fig6,float,fig6-60s,sim,-DTWIN_COST=1)
+# report arguments TARGET:SCENE:VARIANT:ELF
+TWIN_COST_SPECS := cortex-m4f:fig6:flash:$(call cm_elf,twin-cost-fig6,cortex-m4f) \
+                   cortex-m4f:fig6:ram:$(call cm_elf,twin-cost-fig6-ram,cortex-m4f) \
+                   cortex-m4f:fig6_1mode:flash:$(call cm_elf,twin-cost-fig6_1mode,cortex-m4f) \
+                   cortex-m4f:fig6_1mode:ram:$(call cm_elf,twin-cost-fig6_1mode-ram,cortex-m4f) \
+                   cortex-m7:fig6:flash:$(call cm_elf,twin-cost-fig6,cortex-m7)
+twin-firmware-report-images: $(foreach c,$(TWIN_COST_SPECS),$(call emb_word,$c,4)) $(TWIN_DIR)/fig6-60s.stream
+twin-firmware-report:
+	$(MAKE) --no-print-directory -j2 twin-firmware-report-images
+	CM_OPT='$(CM_OPT)' CM_BUILD='$(CM_BUILD)' TWIN_FIFO_SAMPLES=1024 \
+	    sh host/reports/twin_firmware_report.sh $(TWIN_DIR)/fig6-60s.csv $(TWIN_COST_SPECS)
+.PHONY: twin-firmware-test twin-firmware-report twin-firmware-report-images
