@@ -494,12 +494,20 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 fuzz_fail("bs_sim_save refused a ready sim");
             if (bs_sim_init(&restored, &scene, model, s0) != BS_OK)
                 fuzz_fail("bs_sim_init refused what it accepted before");
+            { /* the solver options are the caller's setting, not state: carried over by hand */
+                bs_solver_options options;
+                if (bs_sim_get_solver(&sim, &options) != BS_OK || bs_sim_set_solver(&restored, &options) != BS_OK)
+                    fuzz_fail("the solver options of one sim do not go to another");
+            }
             bytes[(op >> 3) % (BS_CHECKPOINT_SIZE - 40) + 36] ^= 0x01u; /* a bit of the state part */
             if (bs_sim_restore(&restored, bytes, sizeof bytes) != BS_E_CHECKPOINT_DAMAGED)
                 fuzz_fail("bs_sim_restore took a damaged checkpoint");
             bytes[(op >> 3) % (BS_CHECKPOINT_SIZE - 40) + 36] ^= 0x01u;
-            if (bs_sim_restore(&restored, bytes, sizeof bytes) != BS_OK)
+            status = bs_sim_restore(&restored, bytes, sizeof bytes);
+            if (status != BS_OK) {
+                fprintf(stderr, "bs_sim_restore: %s\n", bs_status_text(status)); /* which refusal */
                 fuzz_fail("bs_sim_restore refused a checkpoint of a state the step produced");
+            }
             if (bs_sim_hash(&restored) != bs_sim_hash(&sim))
                 fuzz_fail("a restored sim differs from the one saved");
             a = bs_sim_step(&sim);
