@@ -86,6 +86,23 @@ printf '[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\nacceleratio
 check_status "run of a scene whose file name holds a quote and a backslash exits 0" 0 $? "$tmp/name.err"
 check_has "the summary escapes the quote and the backslash of the name" "$tmp/name.json" '{"scene":"q\"b\\c","model"'
 
+# ---- the twin refuses a measured stream with NaN, a gap or another rate,
+# naming file and line, and writes no estimates
+"$bin" twin-plant configs/fig6.ini --out "$tmp/measured.csv" --t-end 0.01 --snr 40 >/dev/null 2>"$tmp/e"
+check_status "twin-plant of 0.01 s exits 0" 0 $? "$tmp/e"
+sed '15s/,[^,]*,/,nan,/' "$tmp/measured.csv" >"$tmp/m_nan.csv"
+sed '16d' "$tmp/measured.csv" >"$tmp/m_gap.csv"
+sed 's/^# sample_rate = 50000 Hz/# sample_rate = 40000 Hz/' "$tmp/measured.csv" >"$tmp/m_rate.csv"
+for bad in nan:m_nan.csv:15:finite gap:m_gap.csv:16:gap rate:m_rate.csv:sample_rate:needs; do
+    what=${bad%%:*} rest=${bad#*:} file=${rest%%:*} rest=${rest#*:} where=${rest%%:*} word=${rest#*:}
+    "$bin" twin configs/fig6.ini --measured "$tmp/$file" --out "$tmp/est_$what.csv" >/dev/null 2>"$tmp/e"
+    check_status "twin on a stream with a $what exits 2" 2 $? "$tmp/e"
+    check_has "... naming $file, $where" "$tmp/e" "$file"
+    check_has "... and what is wrong ($word)" "$tmp/e" "$word"
+    [ -e "$tmp/est_$what.csv" ] && fail "twin on a stream with a $what writes no estimates" "est_$what.csv exists" \
+        || pass "twin on a stream with a $what writes no estimates"
+done
+
 # ---- a negative load is refused with its file, line and range
 printf '[scene]\nbase = mssp2023.ini\n[transducer]\nload = resistor\nresistance = -5\n' >"$tmp/negative.ini"
 "$bin" run "$tmp/negative.ini" --out "$tmp/negative.csv" >/dev/null 2>"$tmp/e"

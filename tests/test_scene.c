@@ -1328,6 +1328,54 @@ static void test_override_beyond_explicit_limit_names_the_option(void **state)
     assert_message_has("--dt", "[numerics] dt", "explicit limit");
 }
 
+/* --set section.key=value: the file's checks, the file's message with the
+ * option in place of file:line, and the option as the field's place. */
+static void test_set_assignment_is_checked_like_a_file_line(void **state)
+{
+    char where[SCENE_PATH + 16];
+    char range[96];
+    char section[SCENE_NAME], key[SCENE_NAME];
+
+    (void)state;
+    support_load("configs/fig6.ini", &read_scene, &core_scene, &scene_derived);
+    assert_int_equal(scene_set_assignment(&read_scene, "--set", "numerics.dt=1e-5", message, sizeof message), 0);
+    assert_close("dt", read_scene.params.dt, 1e-5, 0.0, 1e-15);
+    assert_string_equal(scene_where(&read_scene, "numerics", "dt", where, sizeof where), "--set numerics.dt=1e-5");
+    assert_int_equal(scene_set_assignment(&read_scene, "--set", "run.model=pcs", message, sizeof message), 0);
+    assert_int_equal(read_scene.params.model, BS_MODEL_PCS);
+    range_text("numerics", "dt", range, sizeof range);
+    message[0] = '\0';
+    assert_int_equal(scene_set_assignment(&read_scene, "--set", "numerics.dt=abc", message, sizeof message), -1);
+    assert_message_has("--set numerics.dt=abc: [numerics] dt = abc: not a number; allowed: ", range);
+    assert_close("dt unchanged", read_scene.params.dt, 1e-5, 0.0, 1e-15);
+    message[0] = '\0';
+    assert_int_equal(scene_set_assignment(&read_scene, "--set", "numerics.dt=-1", message, sizeof message), -1);
+    assert_message_has("--set numerics.dt=-1: [numerics] dt = -1: out of range");
+    message[0] = '\0';
+    assert_int_equal(scene_set_assignment(&read_scene, "--set", "numerics.step=1", message, sizeof message), -1);
+    assert_message_has("--set numerics.step=1: unknown field [numerics] step", "beamslider fields");
+    message[0] = '\0';
+    assert_int_equal(scene_set_assignment(&read_scene, "--set", "dt=1e-5", message, sizeof message), -1);
+    assert_message_has("expected section.key=value");
+    assert_int_equal(scene_set_assignment(&read_scene, "--set", "numerics.dt", message, sizeof message), -1);
+    assert_int_equal(scene_set_assignment(&read_scene, "--set", ".dt=1", message, sizeof message), -1);
+    assert_int_equal(scene_set_assignment(&read_scene, "--set", "numerics.=1", message, sizeof message), -1);
+    /* [scene] base is the file's business, not a field */
+    assert_int_equal(scene_set_assignment(&read_scene, "--set", "scene.base=x.ini", message, sizeof message), -1);
+    /* a derived check names the option as the field's place */
+    assert_int_equal(scene_set_assignment(&read_scene, "--set", "run.model=free", message, sizeof message), 0);
+    assert_int_equal(scene_set_assignment(&read_scene, "--set", "numerics.dt=1e-4", message, sizeof message), 0);
+    message[0] = '\0';
+    assert_int_equal(scene_build(&read_scene, &core_scene, &scene_derived, message, sizeof message), -1);
+    assert_message_has("--set numerics.dt=1e-4", "[numerics] dt", "explicit limit");
+    /* field names */
+    assert_true(scene_field_named("excitation.frequency=3", 20, section, key) >= 0);
+    assert_string_equal(section, "excitation");
+    assert_string_equal(key, "frequency");
+    assert_int_equal(scene_field_named("excitation.frequency", 19, NULL, NULL), -1);
+    assert_int_equal(scene_field_named("excitation", 10, NULL, NULL), -1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1383,6 +1431,7 @@ int main(void)
         cmocka_unit_test(test_options_leave_the_base_file_slots_alone),
         cmocka_unit_test(test_override_refuses_a_bad_value_naming_the_option),
         cmocka_unit_test(test_override_beyond_explicit_limit_names_the_option),
+        cmocka_unit_test(test_set_assignment_is_checked_like_a_file_line),
     };
     return cmocka_run_group_tests(tests, make_tmp_dir, remove_tmp_dir);
 }

@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include "run.h"
+#include "scene_values.h"
 #include "summary.h"
 #include "sweep.h"
 
@@ -38,12 +39,13 @@ static const char good_scene[] = "[scene]\nbase = mssp2023.ini\n[excitation]\nfr
 static const char *const run_keys[] = {
     "scene", "model", "precision", "modes", "dt", "excitation", "status", "t_end", "steps", "s0", "s_final",
     "s_min", "t_s_min", "amp_final_h", "amp_periods", "wall_s", "steps_per_s", "max_pgs_iters",
-    "unconverged_steps", "contact_steps", "mean_pgs_iters", "max_systems", "mean_systems", "hash", "version",
-    "revision", NULL };
+    "unconverged_steps", "contact_steps", "mean_pgs_iters", "max_systems", "mean_systems", "hash", "set", "scene_hash",
+    "fields_hash", "version", "revision", NULL };
 static const char *const sweep_keys[] = {
     "scene", "command", "dir", "precision", "modes", "dt", "status", "from", "to", "step", "hold", "record",
     "points", "steps", "wall_s", "steps_per_s", "max_pgs_iters", "unconverged_steps", "contact_steps",
-    "mean_pgs_iters", "max_systems", "mean_systems", "version", "revision", NULL };
+    "mean_pgs_iters", "max_systems", "mean_systems", "set", "scene_hash", "fields_hash", "version", "revision",
+    NULL };
 
 static void write_file(const char *path, const char *text)
 {
@@ -149,7 +151,7 @@ static void run_and_summarise(const char *path)
     options.solver = scene_solver(&read_scene.params);
     options.every = 1;
     assert_int_equal(run_scene(&core_scene, &options, &result), 0);
-    capture(summary_print_run(out_, &read_scene.params, &core_scene, NULL, &result));
+    capture(summary_print_run(out_, &read_scene, &core_scene, NULL, &result));
 }
 
 /* The name comes from the file name: quote, backslash, newline, tab and a
@@ -193,10 +195,12 @@ static void test_run_summary_of_a_hostile_scene_name_is_json(void **state)
 /* The formats of README.md's example line, digit for digit. */
 static void test_run_summary_keeps_the_number_formats(void **state)
 {
+    static scene_file file; /* static: large */
+    static bs_scene scene;
     scene_params params;
-    bs_scene scene;
     run_result r;
     char expected[1024];
+    char hashes[128];
     cJSON *root;
 
     (void)state;
@@ -224,15 +228,19 @@ static void test_run_summary_keeps_the_number_formats(void **state)
     r.solve.max_systems = 8;
     r.solve.systems = 436006;
     r.hash = 0xa75df610u;
-    capture(summary_print_run(out_, &params, &scene, NULL, &r));
+    memset(&file, 0, sizeof file);
+    file.params = params;
+    capture(summary_print_run(out_, &file, &scene, NULL, &r));
+    snprintf(hashes, sizeof hashes, "\"set\":{},\"scene_hash\":\"%08x\",\"fields_hash\":\"%016llx\"",
+             (unsigned)bs_scene_hash(&scene), (unsigned long long)scene_values_hash(&params, NULL));
     snprintf(expected, sizeof expected,
              "{\"scene\":\"fig6\",\"model\":\"free\",\"precision\":\"%s\",\"modes\":5,\"dt\":2e-05,"
              "\"excitation\":\"harmonic\",\"status\":\"ok\",\"t_end\":60,\"steps\":3000000,\"s0\":0.3,"
              "\"s_final\":0.331294145,\"s_min\":0.258502209,\"t_s_min\":9.290160,\"amp_final_h\":1.23524,"
              "\"amp_periods\":25,\"wall_s\":2.359,\"steps_per_s\":1.272e+06,\"max_pgs_iters\":2,"
              "\"unconverged_steps\":13,\"contact_steps\":2713455,\"mean_pgs_iters\":1.003,\"max_systems\":8,"
-             "\"mean_systems\":0.1607,\"hash\":\"a75df610\",\"version\":\"%s\","
-             "\"revision\":\"%s\"}\n", BS_REAL_NAME, BS_VERSION_STRING, BS_REVISION);
+             "\"mean_systems\":0.1607,\"hash\":\"a75df610\",%s,\"version\":\"%s\","
+             "\"revision\":\"%s\"}\n", BS_REAL_NAME, hashes, BS_VERSION_STRING, BS_REVISION);
     assert_string_equal(line, expected);
     root = parse_summary(run_keys);
     cJSON_Delete(root);
@@ -241,8 +249,9 @@ static void test_run_summary_keeps_the_number_formats(void **state)
 /* JSON has no NaN: a number that is not finite is null, the line stays JSON. */
 static void test_non_finite_numbers_are_null(void **state)
 {
+    static scene_file file; /* static: large */
+    static bs_scene scene;
     scene_params params;
-    bs_scene scene;
     run_result r;
     cJSON *root;
 
@@ -256,7 +265,9 @@ static void test_non_finite_numbers_are_null(void **state)
     r.s_final = (double)NAN;
     r.amp_final_h = HUGE_VAL;
     r.t_s_min = 1e300; /* %.6f: 301 digits, still a number */
-    capture(summary_print_run(out_, &params, &scene, NULL, &r));
+    memset(&file, 0, sizeof file);
+    file.params = params;
+    capture(summary_print_run(out_, &file, &scene, NULL, &r));
     root = parse_summary(run_keys);
     assert_true(cJSON_IsNull(cJSON_GetObjectItemCaseSensitive(root, "s_final")));
     assert_true(cJSON_IsNull(cJSON_GetObjectItemCaseSensitive(root, "amp_final_h")));
@@ -267,8 +278,10 @@ static void test_non_finite_numbers_are_null(void **state)
 static void test_sweep_summary_is_json_with_its_formats(void **state)
 {
     static const char name[] = "sw\"eep\\\x1f";
+    static scene_file file; /* static: large */
+    static bs_scene scene;
     scene_params params;
-    bs_scene scene;
+    char hashes[128];
     sweep_options o;
     sweep_result r;
     char expected[1024];
@@ -296,19 +309,71 @@ static void test_sweep_summary_is_json_with_its_formats(void **state)
     r.solve.sweeps = 5;
     r.solve.max_systems = 3;
     r.solve.systems = 3;
-    capture(summary_print_sweep(out_, &params, &scene, &o, &r));
+    memset(&file, 0, sizeof file);
+    file.params = params;
+    capture(summary_print_sweep(out_, &file, &scene, &o, &r));
+    snprintf(hashes, sizeof hashes, "\"set\":{},\"scene_hash\":\"%08x\",\"fields_hash\":\"%016llx\"",
+             (unsigned)bs_scene_hash(&scene), (unsigned long long)scene_values_hash(&params, NULL));
     snprintf(expected, sizeof expected,
              "{\"scene\":\"sw\\\"eep\\\\\\u001f\",\"command\":\"sweep\",\"dir\":\"up\",\"precision\":\"%s\","
              "\"modes\":5,\"dt\":2e-05,\"status\":\"ok\",\"from\":0,\"to\":0.5,\"step\":0.005,\"hold\":100,"
              "\"record\":25,\"points\":101,\"steps\":5000000,\"wall_s\":3.25,\"steps_per_s\":1.538e+06,"
              "\"max_pgs_iters\":2,\"unconverged_steps\":0,\"contact_steps\":4,\"mean_pgs_iters\":1.25,"
-             "\"max_systems\":3,\"mean_systems\":0.75,"
+             "\"max_systems\":3,\"mean_systems\":0.75,%s,"
              "\"version\":\"%s\",\"revision\":\"%s\"}\n",
-             BS_REAL_NAME, BS_VERSION_STRING, BS_REVISION);
+             BS_REAL_NAME, hashes, BS_VERSION_STRING, BS_REVISION);
     assert_string_equal(line, expected);
     root = parse_summary(sweep_keys);
     assert_string_equal(cJSON_GetObjectItemCaseSensitive(root, "scene")->valuestring, name);
     cJSON_Delete(root);
+}
+
+/* The summary says what it is about: every field the command line set,
+ * with its resolved value (numbers as numbers), and hashes that change with
+ * any field but the scene's name and description. */
+static void test_run_summary_echoes_overrides_and_hashes(void **state)
+{
+    static scene_file renamed; /* static: large */
+    char path[SCENE_PATH];
+    char err[1024];
+    run_options options;
+    run_result result;
+    cJSON *root, *set;
+
+    (void)state;
+    snprintf(path, sizeof path, "%s/echo.ini", tmp_dir);
+    write_file(path, good_scene);
+    support_load(path, &read_scene, &core_scene, &scene_derived);
+    assert_int_equal(scene_set_assignment(&read_scene, "--set", "excitation.frequency=1.1e2", err, sizeof err), 0);
+    assert_int_equal(scene_set_assignment(&read_scene, "--set", "run.model=free", err, sizeof err), 0);
+    assert_int_equal(scene_set(&read_scene, "run", "t_end", "0.001", "--t-end", err, sizeof err), 0);
+    support_build(&read_scene, &core_scene, &scene_derived);
+    memset(&options, 0, sizeof options);
+    options.model = BS_MODEL_FREE;
+    options.s0 = read_scene.params.s0;
+    options.t_end = read_scene.params.t_end;
+    options.dt = read_scene.params.dt;
+    options.solver = scene_solver(&read_scene.params);
+    options.every = 1;
+    assert_int_equal(run_scene(&core_scene, &options, &result), 0);
+    capture(summary_print_run(out_, &read_scene, &core_scene, NULL, &result));
+    root = parse_summary(run_keys);
+    set = cJSON_GetObjectItemCaseSensitive(root, "set");
+    assert_int_equal(cJSON_GetArraySize(set), 3);
+    assert_true(cJSON_IsNumber(cJSON_GetObjectItemCaseSensitive(set, "excitation.frequency")));
+    assert_true(cJSON_GetObjectItemCaseSensitive(set, "excitation.frequency")->valuedouble == 110.0);
+    assert_string_equal(cJSON_GetObjectItemCaseSensitive(set, "run.model")->valuestring, "free");
+    assert_true(cJSON_GetObjectItemCaseSensitive(set, "run.t_end")->valuedouble == 0.001);
+    assert_non_null(strstr(line, "\"set\":{\"excitation.frequency\":110,"));
+    assert_int_equal(strlen(cJSON_GetObjectItemCaseSensitive(root, "fields_hash")->valuestring), 16);
+    cJSON_Delete(root);
+    /* another name and description: the same hash; another value: another */
+    renamed = read_scene;
+    strcpy(renamed.params.name, "another");
+    strcpy(renamed.params.description, "described");
+    assert_true(scene_values_hash(&renamed.params, NULL) == scene_values_hash(&read_scene.params, NULL));
+    renamed.params.acceleration = nextafter(renamed.params.acceleration, 0.0);
+    assert_true(scene_values_hash(&renamed.params, NULL) != scene_values_hash(&read_scene.params, NULL));
 }
 
 int main(void)
@@ -319,6 +384,7 @@ int main(void)
         cmocka_unit_test(test_run_summary_keeps_the_number_formats),
         cmocka_unit_test(test_non_finite_numbers_are_null),
         cmocka_unit_test(test_sweep_summary_is_json_with_its_formats),
+        cmocka_unit_test(test_run_summary_echoes_overrides_and_hashes),
     };
     return cmocka_run_group_tests(tests, make_tmp_dir, remove_tmp_dir);
 }

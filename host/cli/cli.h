@@ -17,6 +17,9 @@ int cli_fields(int argc, char **argv);
 int cli_twin(int argc, char **argv);
 int cli_twin_plant_command(int argc, char **argv);
 int cli_twin_gains_command(int argc, char **argv);
+int cli_map(int argc, char **argv);
+int cli_map_merge(int argc, char **argv);
+int cli_map_plot(int argc, char **argv);
 
 /* Prints "beamslider: error: ..." to stderr. */
 void cli_error(const char *format, ...);

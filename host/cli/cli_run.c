@@ -110,12 +110,13 @@ static int parse_options(int argc, char **argv, run_cli *cli, scene_file *file)
         }
         for (o = overrides; o->option && strcmp(o->option, option); ++o)
             ;
-        if (o->option) {
-            if (scene_set(file, o->section, o->key, argv[i + 1], option, err, sizeof err) != 0) {
+        if (o->option || !strcmp(option, "--set")) {
+            if (o->option ? scene_set(file, o->section, o->key, argv[i + 1], option, err, sizeof err) != 0
+                          : scene_set_assignment(file, option, argv[i + 1], err, sizeof err) != 0) {
                 cli_error("%s", err);
                 return -1;
             }
-            if (!strcmp(option, "--t-end"))
+            if (!strcmp(option, "--t-end") || !strncmp(argv[i + 1], "run.t_end=", 10))
                 cli->t_end_given = 1;
         } else if ((taken = parse_record_option(option, argv[i + 1], cli)) <= 0) {
             if (taken < 0)
@@ -273,7 +274,7 @@ int cli_run(int argc, char **argv)
     if (result.status != BS_OK)
         cli_error("%s: stopped at t = %.6f s (step %llu): %s; state and CSV kept up to the last good step",
                   file.params.name, result.t, (unsigned long long)result.steps, bs_status_text(result.status));
-    if (summary_print_run(stdout, &file.params, &scene, means ? &record : NULL, &result) != 0) {
+    if (summary_print_run(stdout, &file, &scene, means ? &record : NULL, &result) != 0) {
         cli_error("cannot write the summary (out of memory?)");
         failed = 1;
     }

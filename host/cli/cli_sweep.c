@@ -14,6 +14,7 @@
 static const char sweep_usage[] =
     "usage: beamslider sweep SCENE.ini --dir up|down --out FILE.csv [--from 0] [--to 0.5]\n"
     "                        [--step 0.005] [--hold 100] [--record 25] [--dt DT] [--pgs-iters K]\n"
+    "                        [--set section.key=value ...]\n"
     "                        [--trace FILE.csv --trace-at S [--trace-periods 5]]\n"
     "  quasi-static PCS sweep with continuation (docs/model.md 6), from rest at the first point:\n"
     "  per grid point s~ (up: --from to --to, down: --to to --from) --hold excitation\n"
@@ -97,8 +98,9 @@ static int parse_options(int argc, char **argv, sweep_cli *cli, sweep_options *o
         }
         for (o = overrides; o->option && strcmp(o->option, option); ++o)
             ;
-        if (o->option) {
-            if (scene_set(file, o->section, o->key, value, option, err, sizeof err) != 0) {
+        if (o->option || !strcmp(option, "--set")) {
+            if (o->option ? scene_set(file, o->section, o->key, value, option, err, sizeof err) != 0
+                          : scene_set_assignment(file, option, value, err, sizeof err) != 0) {
                 cli_error("%s", err);
                 return -1;
             }
@@ -243,7 +245,7 @@ int cli_sweep(int argc, char **argv)
     if (r.status != BS_OK)
         cli_error("%s: sweep stopped after %d of %d points: %s; the CSV holds the complete points",
                   file.params.name, r.points_done, points, bs_status_text(r.status));
-    if (summary_print_sweep(stdout, &file.params, &scene, &options, &r) != 0) {
+    if (summary_print_sweep(stdout, &file, &scene, &options, &r) != 0) {
         cli_error("cannot write the summary (out of memory?)");
         failed = 1;
     }

@@ -12,10 +12,10 @@ static const char usage[] =
     "  modes SCENE.ini        modal data: f_k [Hz], gamma_k, phi_k(4/7) per mode\n"
     "  gen SCENE.ini          C header of the scene for a compile-time (embedded) build\n"
     "  sweep SCENE.ini --dir up|down --out FILE.csv [--from 0] [--to 0.5] [--step 0.005]\n"
-    "                [--hold 100] [--record 25]\n"
+    "                [--hold 100] [--record 25] [--set section.key=value ...]\n"
     "                         quasi-static PCS sweep: amplitude and transport per s~\n"
     "  run SCENE.ini [--model free|pcs] [--s0 S] [--t-end T] [--dt DT] [--pgs-iters K]\n"
-    "                [--out FILE.csv] [--every N] [--periods FILE.csv]\n"
+    "                [--out FILE.csv] [--every N] [--periods FILE.csv] [--set section.key=value ...]\n"
     "                         simulate; CSV rows every N steps, one row per excitation\n"
     "                         period with --periods, JSON summary on stdout\n"
     "  twin SCENE.ini --measured FILE.csv --out EST.csv [--signal deflection|voltage]\n"
@@ -25,6 +25,12 @@ static const char usage[] =
     "                         a measured-signals file from a (perturbed) plant\n"
     "  twin-gains SCENE.ini --noise SIGMA [...]\n"
     "                         the observer's constants as a C header\n"
+    "  map SCENE.ini --vary section.key=FROM:TO:STEP|v1,v2,... [--repeat K] [--jobs N]\n"
+    "                [--shard I/N] [--set section.key=value ...] --out DIR\n"
+    "                         a grid of runs, resumable and sharded (beamslider map --help)\n"
+    "  map-merge DIR          the merged tables of a map's shards\n"
+    "  map-plot DIR [--x FIELD --y FIELD] [--mark X,Y,LABEL ...]\n"
+    "                         heatmaps of a map with gnuplot (beamslider map-plot --help)\n"
     "  fields                 the reference of every scene field (Markdown; docs/fields.md)\n"
     "  --version              version, source revision and precision\n"
     "core precision: " BS_REAL_NAME "\n";
@@ -68,6 +74,12 @@ int main(int argc, char **argv)
         return finish(cli_twin_plant_command(argc - 2, argv + 2));
     if (argc >= 2 && !strcmp(argv[1], "twin-gains"))
         return finish(cli_twin_gains_command(argc - 2, argv + 2));
+    if (argc >= 2 && !strcmp(argv[1], "map"))
+        return finish(cli_map(argc - 2, argv + 2));
+    if (argc >= 2 && !strcmp(argv[1], "map-merge"))
+        return finish(cli_map_merge(argc - 2, argv + 2));
+    if (argc >= 2 && !strcmp(argv[1], "map-plot"))
+        return finish(cli_map_plot(argc - 2, argv + 2));
     if (argc >= 2 && !strcmp(argv[1], "fields"))
         return finish(cli_fields(argc - 2, argv + 2));
     if (argc == 2 && !strcmp(argv[1], "--version")) {

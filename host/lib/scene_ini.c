@@ -322,36 +322,43 @@ static int assign(scene_params *params, const field_spec *f, const char *value, 
 }
 
 /* Sets field [section] key from file (an index into files, line > 0) or
- * from an option (file = SCENE_BY_OPTION, origin: its name, line 0). */
+ * from an option (file = SCENE_BY_OPTION, origin: its name, line 0). An
+ * option that names the field itself (--dt) is reported as "--dt abc: why";
+ * an assignment (line SCENE_ASSIGNMENT: origin is "--set numerics.dt=abc")
+ * like a file's line, with origin in place of "file:line". */
+#define SCENE_ASSIGNMENT (-1)
 static int set_field(scene_file *scene, int file, const char *origin, int line, const char *section,
                      const char *key, const char *value, char *err, size_t err_size)
 {
     const int i = field_index(section, key);
+    char place[SCENE_PATH + 32];
     char why[192];
 
+    if (file >= 0)
+        snprintf(place, sizeof place, "%s:%d", origin, line);
+    else
+        snprintf(place, sizeof place, "%s", origin);
     if (i < 0) {
-        if (file >= 0)
-            snprintf(err, err_size, "%s:%d: unknown field [%s] %s", origin, line, section, key);
-        else
-            snprintf(err, err_size, "%s: unknown field [%s] %s", origin, section, key);
+        snprintf(err, err_size, "%s: unknown field [%s] %s%s", place, section, key,
+                 file >= 0 ? "" : " (beamslider fields lists every field)");
         return -1;
     }
     if (file >= 0 && scene->set_file[i] == file) {
-        snprintf(err, err_size, "%s:%d: [%s] %s set twice (first at line %d)", origin, line, section, key,
+        snprintf(err, err_size, "%s: [%s] %s set twice (first at line %d)", place, section, key,
                  scene->set_line[i]);
         return -1;
     }
     if (assign(&scene->params, &scene_fields[i], value, why, sizeof why) != 0) {
-        if (file >= 0)
-            snprintf(err, err_size, "%s:%d: [%s] %s = %s: %s", origin, line, section, key, value, why);
+        if (file >= 0 || line == SCENE_ASSIGNMENT)
+            snprintf(err, err_size, "%s: [%s] %s = %s: %s", place, section, key, value, why);
         else
             snprintf(err, err_size, "%s %s: %s", origin, value, why);
         return -1;
     }
     scene->set_file[i] = file;
-    scene->set_line[i] = line;
+    scene->set_line[i] = file >= 0 ? line : 0;
     if (file == SCENE_BY_OPTION)
-        strcpy(scene->set_option[i], origin); /* scene_set checked its length */
+        snprintf(scene->set_option[i], SCENE_OPTION, "%s", origin); /* the callers checked its length */
     return 0;
 }
 
@@ -614,6 +621,62 @@ int scene_set(scene_file *scene, const char *section, const char *key, const cha
         return -1;
     }
     return set_field(scene, SCENE_BY_OPTION, origin, 0, section, key, value, err, err_size);
+}
+
+int scene_field_named(const char *name, size_t length, char *section, char *key)
+{
+    const char *dot = memchr(name, '.', length);
+    int i;
+
+    if (!dot)
+        return -1;
+    for (i = 0; scene_fields[i].key; ++i) {
+        const field_spec *f = &scene_fields[i];
+        if ((size_t)(dot - name) == strlen(f->section) && !strncmp(name, f->section, (size_t)(dot - name))
+            && length - (size_t)(dot - name) - 1 == strlen(f->key)
+            && !strncmp(dot + 1, f->key, strlen(f->key))) {
+            if (section)
+                strcpy(section, f->section);
+            if (key)
+                strcpy(key, f->key);
+            return i;
+        }
+    }
+    return -1;
+}
+
+int scene_set_assignment(scene_file *scene, const char *option, const char *assignment, char *err,
+                         size_t err_size)
+{
+    char origin[SCENE_OPTION];
+    char section[SCENE_NAME], key[SCENE_NAME];
+    const char *equals = strchr(assignment, '=');
+    const char *dot = strchr(assignment, '.');
+
+    if (!equals || !dot || dot > equals || dot == assignment || dot + 1 == equals) {
+        snprintf(err, err_size, "%s %s: expected section.key=value, such as %s excitation.frequency=110 "
+                 "(beamslider fields lists every field)", option, assignment, option);
+        return -1;
+    }
+    if (scene_field_named(assignment, (size_t)(equals - assignment), section, key) < 0) {
+        snprintf(err, err_size, "%s %s: unknown field [%.*s] %.*s (beamslider fields lists every field)", option,
+                 assignment, (int)(dot - assignment), assignment, (int)(equals - dot - 1), dot + 1);
+        return -1;
+    }
+    /* where the value came from, as messages and the JSON summary name it: the
+     * whole assignment when it fits, else the option and the field */
+    if (snprintf(origin, sizeof origin, "%s %s", option, assignment) >= (int)sizeof origin)
+        snprintf(origin, sizeof origin, "%s %s.%s=...", option, section, key);
+    if (set_field(scene, SCENE_BY_OPTION, origin, SCENE_ASSIGNMENT, section, key, equals + 1, err, err_size) != 0) {
+        /* a message naming the whole option, even where origin was cut */
+        char why[1024];
+        const char *detail = strstr(err, ": [");
+        snprintf(why, sizeof why, "%s", detail ? detail : "");
+        if (detail)
+            snprintf(err, err_size, "%s %s%s", option, assignment, why);
+        return -1;
+    }
+    return 0;
 }
 
 const char *scene_where(const scene_file *scene, const char *section, const char *key,

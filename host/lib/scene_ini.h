@@ -16,7 +16,8 @@ enum { SCENE_MAX_FIELDS = 0 SCENE_FIELDS(SCENE_COUNT_FIELD) };
  * would otherwise be read for ever. */
 #define SCENE_MAX_BYTES (1L << 20)
 
-#define SCENE_OPTION 64
+#define SCENE_OPTION 192 /* "--set section.key=value" with a value of most texts */
+#define SCENE_NAME 32    /* a section's or a key's name, with its NUL */
 #define SCENE_NOT_SET (-1)   /* set_file: the field was not set (default or missing) */
 #define SCENE_BY_OPTION (-2) /* set_file: set by a command-line option (set_option) */
 
@@ -44,6 +45,21 @@ int scene_load(const char *path, scene_file *scene, char *err, size_t err_size);
  * wins. Returns 0 or -1. */
 int scene_set(scene_file *scene, const char *section, const char *key, const char *value,
               const char *origin, char *err, size_t err_size);
+
+/* Sets one field from assignment "section.key=value", given by the
+ * command-line option (--set): checked exactly as a file line is, and
+ * reported alike with "OPTION section.key=value" in place of "file:line"
+ * ("--set numerics.dt=abc: [numerics] dt = abc: not a number; allowed: ...").
+ * An unknown field or an assignment without section.key= is refused. The
+ * field's place (scene_where) is the option and the assignment. Returns 0
+ * or -1. */
+int scene_set_assignment(scene_file *scene, const char *option, const char *assignment, char *err,
+                         size_t err_size);
+
+/* The index into scene_fields of the field named "section.key" (the first
+ * length characters of name), -1 if there is none; its section and key are
+ * copied to section and key (SCENE_NAME characters each) unless NULL. */
+int scene_field_named(const char *name, size_t length, char *section, char *key);
 
 /* "file:line" (or the option name) where [section] key was set, into out. */
 const char *scene_where(const scene_file *scene, const char *section, const char *key,

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "scene_values.h"
 
 /* A summary being built; failed: some part could not be added. */
 typedef struct summary {
@@ -61,6 +62,43 @@ static void add_contact_figures(summary *s, const solve_tally *solve)
     add_number(s, "mean_systems", "%.4g", solve_tally_mean_systems(solve));
 }
 
+/* The fields the command line set (--set, --s0, ...) as "section.key":
+ * value, numbers as numbers, so that the line says what it is about
+ * without the command that made it. */
+static void add_overrides(summary *s, const scene_file *file)
+{
+    cJSON *set = cJSON_AddObjectToObject(s->root, "set");
+    char value[SCENE_TEXT + 32];
+    char name[2 * SCENE_NAME];
+    int i;
+
+    if (!set) {
+        s->failed = 1;
+        return;
+    }
+    for (i = 0; scene_fields[i].key; ++i) {
+        const field_spec *f = &scene_fields[i];
+        if (file->set_file[i] != SCENE_BY_OPTION)
+            continue;
+        snprintf(name, sizeof name, "%s.%s", f->section, f->key);
+        scene_value_text(&file->params, f, value, sizeof value);
+        if (!(f->kind == FIELD_REAL || f->kind == FIELD_INT ? cJSON_AddRawToObject(set, name, value)
+                                                             : cJSON_AddStringToObject(set, name, value)))
+            s->failed = 1;
+    }
+}
+
+/* Which scene exactly: the core's hash of the scene it ran (bs_scene_hash)
+ * and the host's of every resolved field (scene_values_hash). */
+static void add_scene_hashes(summary *s, const scene_file *file, const bs_scene *scene)
+{
+    char text[24];
+    snprintf(text, sizeof text, "%08x", (unsigned)bs_scene_hash(scene));
+    add_text(s, "scene_hash", text);
+    snprintf(text, sizeof text, "%016llx", (unsigned long long)scene_values_hash(&file->params, NULL));
+    add_text(s, "fields_hash", text);
+}
+
 /* What produced the numbers: the library's version and the source revision
  * (git describe at build time; "unknown" outside a git checkout). */
 static void add_provenance(summary *s)
@@ -111,9 +149,10 @@ static void add_harvest(summary *s, const run_result *r)
     add_number(s, "power_window_s", "%.9g", r->power_window);
 }
 
-int summary_print_run(FILE *out, const scene_params *p, const bs_scene *scene, const excitation_file *record,
+int summary_print_run(FILE *out, const scene_file *file, const bs_scene *scene, const excitation_file *record,
                       const run_result *r)
 {
+    const scene_params *p = &file->params;
     summary s;
     char hash[16];
 
@@ -140,13 +179,16 @@ int summary_print_run(FILE *out, const scene_params *p, const bs_scene *scene, c
     add_contact_figures(&s, &r->solve);
     snprintf(hash, sizeof hash, "%08x", (unsigned)r->hash);
     add_text(&s, "hash", hash);
+    add_overrides(&s, file);
+    add_scene_hashes(&s, file, scene);
     add_provenance(&s);
     return finish(&s, out);
 }
 
-int summary_print_sweep(FILE *out, const scene_params *p, const bs_scene *scene, const sweep_options *o,
+int summary_print_sweep(FILE *out, const scene_file *file, const bs_scene *scene, const sweep_options *o,
                         const sweep_result *r)
 {
+    const scene_params *p = &file->params;
     summary s;
 
     s.root = cJSON_CreateObject();
@@ -168,6 +210,53 @@ int summary_print_sweep(FILE *out, const scene_params *p, const bs_scene *scene,
     add_number(&s, "wall_s", "%.4g", r->wall_s);
     add_number(&s, "steps_per_s", "%.4g", r->wall_s > 0.0 ? (double)r->steps / r->wall_s : 0.0);
     add_contact_figures(&s, &r->solve);
+    add_overrides(&s, file);
+    add_scene_hashes(&s, file, scene);
+    add_provenance(&s);
+    return finish(&s, out);
+}
+
+int summary_print_map(FILE *out, const scene_file *file, const summary_map *m)
+{
+    summary s;
+    cJSON *vary;
+    char shard[32];
+    int v;
+
+    s.root = cJSON_CreateObject();
+    s.failed = s.root == NULL;
+    add_text(&s, "scene", file->params.name);
+    add_overrides(&s, file);
+    add_text(&s, "command", "map");
+    add_text(&s, "precision", BS_REAL_NAME);
+    vary = s.failed ? NULL : cJSON_AddObjectToObject(s.root, "vary");
+    if (!vary)
+        s.failed = 1;
+    for (v = 0; vary && v < m->grid->vary_count; ++v) {
+        char count[16];
+        snprintf(count, sizeof count, "%d", m->grid->vary[v].count);
+        if (!cJSON_AddRawToObject(vary, m->grid->vary[v].name, count))
+            s.failed = 1;
+    }
+    add_count(&s, "points", (unsigned long long)m->grid->points);
+    add_int(&s, "repeat", m->grid->repeat);
+    add_count(&s, "cases", (unsigned long long)m->grid->cases);
+    snprintf(shard, sizeof shard, "%d/%d", m->shard_index, m->shard_count);
+    add_text(&s, "shard", shard);
+    add_count(&s, "shard_cases", (unsigned long long)m->shard_cases);
+    add_count(&s, "skipped", (unsigned long long)m->skipped);
+    add_count(&s, "run", (unsigned long long)m->run);
+    add_int(&s, "jobs", m->jobs);
+    add_count(&s, "done", (unsigned long long)m->done_total);
+    add_count(&s, "torn_lines", (unsigned long long)m->torn);
+    add_count(&s, "invalid_lines", (unsigned long long)m->invalid);
+    if (!s.failed && !cJSON_AddBoolToObject(s.root, "complete", m->complete))
+        s.failed = 1;
+    add_text(&s, "out", m->dir);
+    add_number(&s, "wall_s", "%.4g", m->wall_s);
+    add_number(&s, "cases_per_s", "%.4g", m->wall_s > 0.0 ? (double)m->run / m->wall_s : 0.0);
+    snprintf(shard, sizeof shard, "%016llx", m->fields_hash);
+    add_text(&s, "fields_hash", shard);
     add_provenance(&s);
     return finish(&s, out);
 }

@@ -5,12 +5,18 @@
 #   make accuracy       error against run time vs the reference -> docs/accuracy.md
 #   make stability      the stiff and extreme cases -> docs/stability.md
 #   make bench          steps per second -> docs/performance.md
+#   make twin-report    the twin in closed loop against the independent reference as
+#                       plant (perturbed, noisy signals) -> docs/twin.md, "Closed loop"
 #   make harvester-report  harvested power over a load sweep, self-tuning under
 #                       electrical damping, a moving ambient frequency -> docs/harvester.md
 #   make baseline-check [BASELINE=COMMIT]
 #                       the slow dynamics of fig6 over ensembles, this tree against
 #                       COMMIT (default: 0.5.0, before the contact-solve redesign)
 #                       -> docs/baseline.md
+#   make maps           the operating map over f_ex x a (1,530 runs of 120 s, 3 starts per
+#                       point; about 30-50 min on 2 cores; resumable) -> docs/maps.md and
+#                       docs/figures/map_*.png (host/reports/maps_report.sh; the map in
+#                       build/maps/mssp2023)
 #   make figures        PCS sweeps and free runs of the papers' figures (double,
 #                       all cores) -> docs/figures/*.png and the tables of
 #                       docs/validation.md section 7 (host/reports/figures/figures.sh;
@@ -18,7 +24,7 @@
 #
 # `make test` also runs sweep-check (host/reports/figures/check_sweep.sh).
 
-.PHONY: fig6-report accuracy stability bench baseline-check harvester-report figures sweep-check deps-figures
+.PHONY: fig6-report accuracy stability bench baseline-check harvester-report twin-report figures sweep-check deps-figures
 
 fig6-report:
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
@@ -48,6 +54,10 @@ harvester-report: deps-figures
 	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
 	sh host/reports/harvester_report.sh
 
+twin-report: deps-figures $(BUILD)/bs-reference
+	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	sh host/reports/twin_report.sh
+
 BASELINE ?= b0fa6bb
 baseline-check:
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
@@ -57,6 +67,10 @@ baseline-check:
 figures: deps-figures
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
 	BIN=$(BUILD)/double/beamslider DATA=$(BUILD)/figures $(if $(JOBS),JOBS=$(JOBS)) sh host/reports/figures/figures.sh
+
+maps: deps-figures
+	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	BIN=$(BUILD)/double/beamslider DIR=$(BUILD)/maps/mssp2023 $(if $(JOBS),JOBS=$(JOBS)) sh host/reports/maps_report.sh
 
 deps-figures:
 	@sh host/deps.sh gnuplot-nox

@@ -1,0 +1,544 @@
+/* map_store.c - a map's folder: identity and result files (map_store.h). */
+#define _POSIX_C_SOURCE 200809L /* getline, scandir, link, fdatasync, gethostname */
+#define _DEFAULT_SOURCE         /* alphasort, gethostname with glibc */
+
+#include "map_store.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include "bs_revision.h"
+#include "map_case.h"
+#include "scene_values.h"
+
+#define IDENTITY_FORMAT 1
+
+/* ---- the identity ------------------------------------------------------ */
+
+/* A growing text. */
+typedef struct text {
+    char *data;
+    size_t used, size;
+    int failed;
+} text;
+
+static void append(text *t, const char *part)
+{
+    const size_t n = strlen(part);
+    if (t->failed)
+        return;
+    if (t->used + n + 1 > t->size) {
+        size_t size = t->size ? t->size : 1024;
+        char *grown;
+        while (t->used + n + 1 > size)
+            size *= 2;
+        if (!(grown = realloc(t->data, size))) {
+            t->failed = 1;
+            return;
+        }
+        t->data = grown;
+        t->size = size;
+    }
+    memcpy(t->data + t->used, part, n + 1);
+    t->used += n;
+}
+
+char *map_identity_text(const map_grid *grid, const scene_file *base, const char *scene_path,
+                        const char *command)
+{
+    unsigned char skip[SCENE_MAX_FIELDS];
+    char line[512];
+    text t;
+    int v, i;
+
+    memset(&t, 0, sizeof t);
+    memset(skip, 0, sizeof skip);
+    for (v = 0; v < grid->vary_count; ++v)
+        skip[grid->vary[v].field] = 1; /* the base's value of a varied field is never used */
+    append(&t, "# beamslider map: what this folder's results are of (docs/maps.md). A map command\n"
+               "# whose identity differs is refused here; lines starting with info are not compared.\n");
+    snprintf(line, sizeof line, "format = %d\nversion = %s\nprecision = %s\n", IDENTITY_FORMAT, bs_version(),
+             BS_REAL_NAME);
+    append(&t, line);
+    snprintf(line, sizeof line, "fields_hash = %016llx\nrepeat = %d\nperturbation = %g\n",
+             (unsigned long long)scene_values_hash(&base->params, skip), grid->repeat, MAP_PERTURBATION);
+    append(&t, line);
+    for (v = 0; v < grid->vary_count; ++v) {
+        int k;
+        snprintf(line, sizeof line, "vary %s = ", grid->vary[v].name);
+        append(&t, line);
+        for (k = 0; k < grid->vary[v].count; ++k) {
+            append(&t, k ? "," : "");
+            append(&t, grid->vary[v].values[k]);
+        }
+        append(&t, "\n");
+    }
+    snprintf(line, sizeof line, "info revision = %s\ninfo scene = %s\ninfo scene_file = %s\n", BS_REVISION,
+             base->params.name, scene_path);
+    append(&t, line);
+    for (i = 0; scene_fields[i].key; ++i)
+        if (base->set_file[i] == SCENE_BY_OPTION) {
+            snprintf(line, sizeof line, "info set = %s\n", base->set_option[i]);
+            append(&t, line);
+        }
+    append(&t, "info command = ");
+    append(&t, command);
+    append(&t, "\n");
+    if (t.failed) {
+        free(t.data);
+        return NULL;
+    }
+    return t.data;
+}
+
+/* The value of the compared line "key = value" in identity (the first
+ * character after "key = "), its length in *length; NULL if none. For
+ * "vary", the n-th vary line (its text from the field's name). */
+static const char *identity_value(const char *identity, const char *key, int n, size_t *length)
+{
+    const char *line = identity;
+    const size_t key_length = strlen(key);
+
+    while (line && *line) {
+        if (!strncmp(line, key, key_length) && line[key_length] == ' ') {
+            const char *value = line + key_length + 1;
+            if (strcmp(key, "vary") && !strncmp(value, "= ", 2))
+                value += 2;
+            if (n-- == 0) {
+                *length = strcspn(value, "\n");
+                return value;
+            }
+        }
+        line = strchr(line, '\n');
+        if (line)
+            ++line;
+    }
+    return NULL;
+}
+
+/* "N values FIRST .. LAST" of a vary line's value list. */
+static void describe_values(const char *value, size_t length, char *out, size_t size)
+{
+    const char *list = strstr(value, " = ");
+    const char *first_end, *last;
+    int count = 1;
+    size_t i;
+
+    if (!list || (size_t)(list - value) > length) {
+        snprintf(out, size, "?");
+        return;
+    }
+    list += 3;
+    length -= (size_t)(list - value);
+    for (i = 0; i < length; ++i)
+        count += list[i] == ',';
+    first_end = memchr(list, ',', length);
+    for (last = list + length; last > list && last[-1] != ','; --last)
+        ;
+    if (!first_end)
+        snprintf(out, size, "1 value %.*s", (int)length, list);
+    else
+        snprintf(out, size, "%d values %.*s .. %.*s", count, (int)(first_end - list), list,
+                 (int)(list + length - last), last);
+}
+
+/* 0 if the compared lines of a (the folder's) and b (this command's) agree,
+ * else -1 with what differs in err. */
+static int compare_identities(const char *dir, const char *a, const char *b, char *err, size_t size)
+{
+    static const char *const keys[] = { "format", "version", "precision", "fields_hash", "repeat",
+                                        "perturbation", NULL };
+    static const char *const meaning[] = { "identity format", "beamslider version", "precision",
+                                           "scene (hash of its fields after --set)", "repeats (--repeat)",
+                                           "perturbation of the repeats" };
+    size_t la = 0, lb = 0;
+    const char *va, *vb;
+    int k, n;
+
+    for (k = 0; keys[k]; ++k) {
+        va = identity_value(a, keys[k], 0, &la);
+        vb = identity_value(b, keys[k], 0, &lb);
+        if (!va || !vb || la != lb || strncmp(va, vb, la)) {
+            snprintf(err, size, "%s holds another map: its %s is %.*s, this command's %.*s "
+                     "(%s/" MAP_IDENTITY_FILE "; use another --out folder, or remove it to start again)",
+                     dir, meaning[k], va ? (int)la : 6, va ? va : "(none)", (int)lb, vb, dir);
+            return -1;
+        }
+    }
+    for (n = 0;; ++n) {
+        size_t name_a, name_b;
+        va = identity_value(a, "vary", n, &la);
+        vb = identity_value(b, "vary", n, &lb);
+        if (!va && !vb)
+            return 0;
+        name_a = va ? strcspn(va, " ") : 0;
+        name_b = vb ? strcspn(vb, " ") : 0;
+        if (!va || !vb || name_a != name_b || strncmp(va, vb, name_a)) {
+            snprintf(err, size, "%s holds another map: its varied field %d is %.*s, this command's %.*s "
+                     "(use another --out folder, or remove it to start again)", dir, n + 1,
+                     va ? (int)name_a : 6, va ? va : "(none)", vb ? (int)name_b : 6, vb ? vb : "(none)");
+            return -1;
+        }
+        if (la != lb || strncmp(va, vb, la)) {
+            char there[256], here[256];
+            describe_values(va, la, there, sizeof there);
+            describe_values(vb, lb, here, sizeof here);
+            snprintf(err, size, "%s holds another map: the values of %.*s differ: %s there, %s in this "
+                     "command (use another --out folder, or remove it to start again)", dir, (int)name_a, va,
+                     there, here);
+            return -1;
+        }
+    }
+}
+
+/* The whole of a file, malloc'd and NUL-terminated; NULL with errno. */
+static char *read_all(const char *path)
+{
+    FILE *in = fopen(path, "r");
+    char *data = NULL;
+    size_t used = 0, size = 0;
+
+    if (!in)
+        return NULL;
+    for (;;) {
+        size_t n;
+        if (used + 4096 + 1 > size) {
+            char *grown = realloc(data, size ? 2 * size : 8192);
+            if (!grown) {
+                free(data);
+                fclose(in);
+                errno = ENOMEM;
+                return NULL;
+            }
+            data = grown;
+            size = size ? 2 * size : 8192;
+        }
+        n = fread(data + used, 1, 4096, in);
+        used += n;
+        if (n < 4096)
+            break;
+    }
+    if (ferror(in)) {
+        free(data);
+        fclose(in);
+        errno = EIO;
+        return NULL;
+    }
+    fclose(in);
+    data[used] = '\0';
+    return data;
+}
+
+/* 1 if dir holds nothing but . and .. and identities being written by
+ * commands that started at the same time (publish_identity) */
+static int folder_is_empty(const char *dir)
+{
+    DIR *d = opendir(dir);
+    struct dirent *entry;
+    int empty = 1;
+    if (!d)
+        return 0;
+    while (empty && (entry = readdir(d)))
+        empty = !strcmp(entry->d_name, ".") || !strcmp(entry->d_name, "..")
+                || !strncmp(entry->d_name, ".map-identity-", 14);
+    closedir(d);
+    return empty;
+}
+
+/* Writes identity to a name of this process's in dir, then links it into
+ * place; 0 (written), 1 (another process's identity is there), -1. */
+static int publish_identity(const char *dir, const char *identity, char *err, size_t size)
+{
+    char aside[4200], path[4200], host[64];
+    const size_t length = strlen(identity);
+    int fd, status = 0;
+
+    if (gethostname(host, sizeof host) != 0)
+        strcpy(host, "host");
+    host[sizeof host - 1] = '\0';
+    snprintf(path, sizeof path, "%s/" MAP_IDENTITY_FILE, dir);
+    snprintf(aside, sizeof aside, "%s/.map-identity-%s-%ld", dir, host, (long)getpid());
+    fd = open(aside, O_WRONLY | O_CREAT | O_TRUNC, 0666);
+    if (fd < 0 || write(fd, identity, length) != (ssize_t)length || fsync(fd) != 0) {
+        snprintf(err, size, "cannot write %s: %s", aside, strerror(errno));
+        if (fd >= 0)
+            close(fd);
+        unlink(aside);
+        return -1;
+    }
+    close(fd);
+    if (link(aside, path) != 0) {
+        if (errno == EEXIST) {
+            status = 1;
+        } else {
+            snprintf(err, size, "cannot write %s: %s", path, strerror(errno));
+            status = -1;
+        }
+    }
+    unlink(aside);
+    return status;
+}
+
+int map_dir_claim(const char *dir, const char *identity, char *err, size_t size)
+{
+    char path[4200];
+    struct stat info;
+    char *there;
+    int created = 0, status;
+
+    if (strlen(dir) > 4000) {
+        snprintf(err, size, "--out %.40s...: path too long", dir);
+        return -1;
+    }
+    if (stat(dir, &info) != 0) {
+        /* EEXIST: another shard made it just now */
+        if (errno != ENOENT || (mkdir(dir, 0777) != 0 && errno != EEXIST)) {
+            snprintf(err, size, "--out %s: cannot create the folder: %s", dir, strerror(errno));
+            return -1;
+        }
+        created = 1;
+    } else if (!S_ISDIR(info.st_mode)) {
+        snprintf(err, size, "--out %s: not a folder", dir);
+        return -1;
+    }
+    snprintf(path, sizeof path, "%s/" MAP_IDENTITY_FILE, dir);
+    if (access(path, F_OK) != 0) {
+        if (!created && !folder_is_empty(dir)) {
+            snprintf(err, size, "--out %s: the folder holds files but no " MAP_IDENTITY_FILE ": not a map's "
+                     "folder (use a new or an empty folder)", dir);
+            return -1;
+        }
+        status = publish_identity(dir, identity, err, size);
+        if (status <= 0) {
+            if (status < 0 && created)
+                rmdir(dir);
+            return status;
+        }
+    }
+    there = read_all(path);
+    if (!there) {
+        snprintf(err, size, "cannot read %s: %s", path, strerror(errno));
+        return -1;
+    }
+    status = compare_identities(dir, there, identity, err, size);
+    if (status == 0) {
+        size_t la = 0, lb = 0;
+        const char *a = identity_value(there, "info revision", 0, &la);
+        const char *b = identity_value(identity, "info revision", 0, &lb);
+        if (!a || !b || la != lb || strncmp(a, b, la)) {
+            snprintf(err, size, "%s was started by source revision %.*s, this is %.*s (the same version): "
+                     "their rows are merged", dir, a ? (int)la : 7, a ? a : "unknown", (int)lb, b);
+            status = 1;
+        }
+    }
+    free(there);
+    return status;
+}
+
+int map_identity_read(const char *dir, map_grid *grid, char *scene, char *err, size_t size)
+{
+    char path[4200];
+    char *identity;
+    const char *value;
+    size_t length;
+    int n, repeat;
+
+    map_grid_init(grid);
+    snprintf(path, sizeof path, "%s/" MAP_IDENTITY_FILE, dir);
+    identity = read_all(path);
+    if (!identity) {
+        snprintf(err, size, "%s: no map here: cannot read %s: %s", dir, path, strerror(errno));
+        return -1;
+    }
+    value = identity_value(identity, "info scene", 0, &length);
+    snprintf(scene, SCENE_TEXT, "%.*s", value ? (int)length : 4, value ? value : "map");
+    value = identity_value(identity, "repeat", 0, &length);
+    repeat = value ? atoi(value) : 0;
+    for (n = 0; (value = identity_value(identity, "vary", n, &length)) != NULL; ++n) {
+        map_vary *vary = &grid->vary[grid->vary_count];
+        const char *list = strstr(value, " = ");
+        const char *at;
+        int k;
+        if (n >= MAP_MAX_VARY || !list || (size_t)(list - value) >= sizeof vary->name)
+            break;
+        memset(vary, 0, sizeof *vary);
+        snprintf(vary->name, sizeof vary->name, "%.*s", (int)(list - value), value);
+        vary->field = scene_field_named(vary->name, strlen(vary->name), NULL, NULL);
+        list += 3;
+        length -= (size_t)(list - value);
+        vary->count = 1;
+        for (at = list; at < list + length; ++at)
+            vary->count += *at == ',';
+        vary->values = malloc((size_t)vary->count * sizeof *vary->values);
+        if (vary->field < 0 || !vary->values) {
+            free(vary->values);
+            break;
+        }
+        ++grid->vary_count;
+        for (k = 0, at = list; k < vary->count; ++k) {
+            const size_t n_value = strcspn(at, ",\n");
+            snprintf(vary->values[k], MAP_VALUE, "%.*s", (int)n_value, at);
+            at += n_value + 1;
+        }
+    }
+    free(identity);
+    if (value || map_grid_finish(grid, repeat, err, size) != 0) {
+        snprintf(err, size, "%s: damaged (not written by this version of beamslider map?)", path);
+        map_grid_free(grid);
+        return -1;
+    }
+    return 0;
+}
+
+/* ---- results ----------------------------------------------------------- */
+
+static int is_results_name(const struct dirent *entry)
+{
+    const size_t n = strlen(entry->d_name);
+    return n > 9 && !strncmp(entry->d_name, "runs-", 5) && !strcmp(entry->d_name + n - 4, ".csv");
+}
+
+/* Takes one file's lines into found. */
+static void read_results_file(const char *path, const map_grid *grid, map_found *found)
+{
+    FILE *in = fopen(path, "r");
+    char *line = NULL;
+    size_t capacity = 0;
+    ssize_t length;
+
+    if (!in)
+        return;
+    while ((length = getline(&line, &capacity, in)) > 0) {
+        long c;
+        if (!strncmp(line, "case,", 5))
+            continue; /* the header */
+        if (line[length - 1] != '\n') {
+            ++found->torn; /* only a last line can lack its newline */
+            continue;
+        }
+        if (!map_row_valid(grid, line, (size_t)length, &c)) {
+            ++found->invalid;
+            continue;
+        }
+        if (found->row[c]) {
+            /* the same case again (a shard rerun while the first still ran):
+             * the result columns must agree; wall_s and check may not */
+            const char *a = found->row[c], *b = line;
+            const char *end_a = a + strlen(a), *end_b = b + length;
+            int commas = 0;
+            ++found->duplicates;
+            while (end_a > a && commas < 2)
+                commas += *--end_a == ',';
+            commas = 0;
+            while (end_b > b && commas < 2)
+                commas += *--end_b == ',';
+            if (end_a - a != end_b - b || strncmp(a, b, (size_t)(end_a - a)))
+                ++found->differing;
+            continue;
+        }
+        found->row[c] = malloc((size_t)length + 1);
+        if (found->row[c]) {
+            memcpy(found->row[c], line, (size_t)length + 1);
+            ++found->done;
+        }
+    }
+    free(line);
+    fclose(in);
+}
+
+int map_found_read(const char *dir, const map_grid *grid, map_found *found, char *err, size_t size)
+{
+    struct dirent **names;
+    char path[4400];
+    int count, i;
+
+    memset(found, 0, sizeof *found);
+    found->row = calloc((size_t)grid->cases, sizeof *found->row);
+    if (!found->row) {
+        snprintf(err, size, "%s: out of memory for %ld cases", dir, grid->cases);
+        return -1;
+    }
+    count = scandir(dir, &names, is_results_name, alphasort); /* a fixed order: the first row of a case wins */
+    if (count < 0) {
+        snprintf(err, size, "cannot read the folder %s: %s", dir, strerror(errno));
+        free(found->row);
+        found->row = NULL;
+        return -1;
+    }
+    for (i = 0; i < count; ++i) {
+        snprintf(path, sizeof path, "%s/%s", dir, names[i]->d_name);
+        read_results_file(path, grid, found);
+        free(names[i]);
+    }
+    free(names);
+    return 0;
+}
+
+void map_found_free(map_found *found, long cases)
+{
+    long c;
+    if (found->row)
+        for (c = 0; c < cases; ++c)
+            free(found->row[c]);
+    free(found->row);
+    found->row = NULL;
+}
+
+int map_results_create(const char *dir, const map_grid *grid, char *path, size_t path_size, char *err,
+                       size_t size)
+{
+    char host[64];
+    char header[8192];
+    int fd = -1, k;
+
+    if (gethostname(host, sizeof host) != 0)
+        strcpy(host, "host");
+    host[sizeof host - 1] = '\0';
+    for (k = 1; k < 1000 && fd < 0; ++k) {
+        if (k == 1)
+            snprintf(path, path_size, "%s/runs-%s-%ld.csv", dir, host, (long)getpid());
+        else
+            snprintf(path, path_size, "%s/runs-%s-%ld-%d.csv", dir, host, (long)getpid(), k);
+        fd = open(path, O_WRONLY | O_CREAT | O_EXCL | O_APPEND, 0666);
+        if (fd < 0 && errno != EEXIST)
+            break;
+    }
+    if (fd < 0) {
+        snprintf(err, size, "cannot create %s: %s", path, strerror(errno));
+        return -1;
+    }
+    map_case_header(grid, header, sizeof header);
+    if (write(fd, header, strlen(header)) != (ssize_t)strlen(header)) {
+        snprintf(err, size, "cannot write %s: %s", path, strerror(errno));
+        close(fd);
+        return -1;
+    }
+    return fd;
+}
+
+int map_results_append(int fd, const char *row, off_t *length, char *err, size_t size)
+{
+    const size_t n = strlen(row);
+    const ssize_t written = write(fd, row, n); /* O_APPEND: one write, one whole line */
+
+    if (written != (ssize_t)n) {
+        const int why = written < 0 ? errno : ENOSPC;
+        /* cut the torn row off again; if that fails too, readers still
+         * ignore it (no newline, or a failing check) */
+        const int cut = written > 0 ? ftruncate(fd, *length) : 0;
+        snprintf(err, size, "cannot append a row: %s%s", strerror(why),
+                 cut ? " (and the part written could not be cut off)" : "");
+        return -1;
+    }
+    *length += (off_t)n;
+    if (fdatasync(fd) != 0) {
+        snprintf(err, size, "cannot sync a row to disk: %s", strerror(errno));
+        return -1;
+    }
+    return 0;
+}

@@ -1,0 +1,206 @@
+#!/bin/sh
+# check_map.sh - beamslider map, map-merge and --set on the command line
+# (docs/maps.md): the same tables whatever the number of workers or shards,
+# resume after a kill -9, refusal of another map's folder and of bad input
+# (exit 2, nothing written), and the outcome classes of the papers' six
+# scenarios (majority of 3 starts). Small maps of short runs, so that
+# make test stays quick.
+#
+# usage, from the repository root:  sh tests/check_map.sh PATH/TO/beamslider
+
+bin=${1:-}
+. "$(dirname "$0")/check_lib.sh"
+check_setup tests/check_map.sh "$bin"
+
+# A small map: 3 frequencies x 2 levels x 2 repeats = 12 cases of 0.2 s.
+small() { # small DIR [OPTIONS...]
+    dir=$1
+    shift
+    "$bin" map configs/fig6.ini --set run.t_end=0.2 --vary excitation.frequency=120:124:2 \
+        --vary excitation.acceleration=10,14 --repeat 2 "$@" --out "$dir"
+}
+# listing DIR: every file with its checksum (to see that nothing changed)
+listing() { (cd "$1" && find . -type f | sort | xargs cksum); }
+
+# ---- --set on run: checked like the file, echoed in the summary
+"$bin" run configs/fig6.ini --set excitation.frequency=1.1e2 --set run.t_end=0.01 >"$tmp/o" 2>"$tmp/e"
+check_status "run --set exits 0" 0 $? "$tmp/e"
+check_has "the summary echoes the fields set" "$tmp/o" '"set":{"excitation.frequency":110,"run.t_end":0.01}'
+check_has "the summary has the scene's hashes" "$tmp/o" '"fields_hash":"'
+"$bin" run configs/fig6.ini --set excitation.frequency=abc >"$tmp/o" 2>"$tmp/e"
+check_status "run --set with a bad value exits 2" 2 $? "$tmp/e"
+check_has "a bad --set value is named as a file line would be" "$tmp/e" \
+    "--set excitation.frequency=abc: [excitation] frequency = abc: not a number; allowed: a finite number in (0, inf) Hz"
+"$bin" run configs/fig6.ini --set excitation.freq=1 >"$tmp/o" 2>"$tmp/e"
+check_status "run --set of an unknown field exits 2" 2 $? "$tmp/e"
+check_has "an unknown --set field is named" "$tmp/e" "--set excitation.freq=1: unknown field [excitation] freq"
+"$bin" sweep configs/fig6.ini --dir up --out "$tmp/sweep.csv" --from 0.29 --to 0.3 --step 0.01 --hold 1 \
+    --record 1 --set contact.friction=0.3 >"$tmp/o" 2>"$tmp/e"
+check_status "sweep --set exits 0" 0 $? "$tmp/e"
+check_has "the sweep summary echoes the fields set" "$tmp/o" '"set":{"contact.friction":0.3}'
+
+# ---- the same tables with one worker, two workers, and three shards
+small "$tmp/one" --jobs 1 >"$tmp/one.json" 2>"$tmp/e"
+check_status "map --jobs 1 exits 0" 0 $? "$tmp/e"
+check_has "map's summary says it is complete" "$tmp/one.json" '"complete":true'
+check_has "map's summary counts the cases" "$tmp/one.json" '"cases":12,'
+rows=$(($(wc -l <"$tmp/one/runs.csv") - 1))
+if [ "$rows" -eq 12 ]; then pass "runs.csv has a row per case"; else fail "runs.csv has a row per case" "$rows rows"; fi
+rows=$(($(wc -l <"$tmp/one/map.csv") - 1))
+if [ "$rows" -eq 6 ]; then pass "map.csv has a row per grid point"; else fail "map.csv has a row per grid point" "$rows rows"; fi
+small "$tmp/two" --jobs 2 >"$tmp/o" 2>"$tmp/e"
+check_status "map --jobs 2 exits 0" 0 $? "$tmp/e"
+check "--jobs 2 gives the same runs.csv as --jobs 1" cmp -s "$tmp/one/runs.csv" "$tmp/two/runs.csv"
+check "--jobs 2 gives the same map.csv as --jobs 1" cmp -s "$tmp/one/map.csv" "$tmp/two/map.csv"
+for i in 1 2 3; do # started together: they race to make the folder and its identity
+    small "$tmp/shards" --jobs 1 --shard "$i/3" >"$tmp/shard$i.json" 2>"$tmp/shard$i.err" &
+done
+wait
+check "three shards at once all exit 0" test -z "$(cat "$tmp"/shard*.err)"
+check_has "a shard runs its share" "$tmp/shard2.json" '"shard":"2/3","shard_cases":4,'
+"$bin" map-merge "$tmp/shards" >"$tmp/o" 2>"$tmp/e"
+check_status "map-merge of the shards exits 0" 0 $? "$tmp/e"
+check "three shards merge into the same runs.csv" cmp -s "$tmp/one/runs.csv" "$tmp/shards/runs.csv"
+check "three shards merge into the same map.csv" cmp -s "$tmp/one/map.csv" "$tmp/shards/map.csv"
+files=$(ls "$tmp/shards" | grep -c '^runs-.*\.csv$')
+if [ "$files" -eq 3 ]; then pass "each shard appends to a file of its own"; else fail "each shard appends to a file of its own" "$files files"; fi
+
+# ---- resume: the same command again skips what is done
+small "$tmp/one" --jobs 2 >"$tmp/o" 2>"$tmp/e"
+check_status "map again in a finished folder exits 0" 0 $? "$tmp/e"
+check_has "map again runs nothing" "$tmp/o" '"skipped":12,"run":0,'
+
+# ---- kill -9 mid-map, a torn last line, then resume: the same table
+long="map configs/fig6.ini --set run.t_end=3 --vary excitation.frequency=118:129:1 --repeat 2 --jobs 2"
+# shellcheck disable=SC2086
+"$bin" $long --out "$tmp/whole" >"$tmp/o" 2>"$tmp/e"
+check_status "the uninterrupted map exits 0" 0 $? "$tmp/e"
+# shellcheck disable=SC2086
+"$bin" $long --out "$tmp/killed" >"$tmp/o" 2>"$tmp/e" & # $! is the map itself
+map_pid=$!
+rows=0
+for attempt in $(seq 1 200); do
+    rows=$(cat "$tmp"/killed/runs-*.csv 2>/dev/null | grep -c -v '^case,')
+    [ "$rows" -ge 4 ] && break
+    sleep 0.05
+done
+kill -9 "$map_pid" 2>/dev/null
+wait "$map_pid" 2>/dev/null
+sleep 0.3 # the workers die with their parent (PR_SET_PDEATHSIG)
+rows=$(cat "$tmp"/killed/runs-*.csv | grep -c -v '^case,')
+if [ "$rows" -ge 4 ] && [ "$rows" -lt 24 ]; then
+    pass "kill -9 stopped the map midway ($rows of 24 cases done)"
+else
+    fail "kill -9 stopped the map midway" "$rows of 24 cases done"
+fi
+check "no merged table after the kill" test ! -e "$tmp/killed/runs.csv"
+file=$(ls "$tmp"/killed/runs-*.csv | head -n 1)
+printf '23,11,1,129,0.30001,ok,signat' >>"$file" # a row torn by the kill
+# shellcheck disable=SC2086
+"$bin" $long --out "$tmp/killed" >"$tmp/o" 2>"$tmp/e"
+check_status "the map resumed after the kill exits 0" 0 $? "$tmp/e"
+check_has "the resumed map skips the cases done" "$tmp/o" "\"skipped\":$rows,"
+check_has "the resumed map ignores the torn line" "$tmp/o" '"torn_lines":1,'
+check "the resumed map gives the uninterrupted one's runs.csv" cmp -s "$tmp/whole/runs.csv" "$tmp/killed/runs.csv"
+check "the resumed map gives the uninterrupted one's map.csv" cmp -s "$tmp/whole/map.csv" "$tmp/killed/map.csv"
+
+# ---- another map in the folder, bad input: exit 2, nothing written or lost
+listing "$tmp/one" >"$tmp/before"
+"$bin" map configs/fig6.ini --set run.t_end=0.2 --vary excitation.frequency=120:124:2 \
+    --vary excitation.acceleration=10,14 --repeat 3 --out "$tmp/one" >"$tmp/o" 2>"$tmp/e"
+check_status "a map with other repeats in the folder exits 2" 2 $? "$tmp/e"
+check_has "it says what differs" "$tmp/e" "holds another map: its repeats (--repeat) is 2, this command's 3"
+small "$tmp/one" --set contact.friction=0.3 >"$tmp/o" 2>"$tmp/e"
+check_status "a map of another scene in the folder exits 2" 2 $? "$tmp/e"
+check_has "it names the scene" "$tmp/e" "its scene (hash of its fields after --set)"
+"$bin" map configs/fig6.ini --set run.t_end=0.2 --vary excitation.frequency=120:126:2 \
+    --vary excitation.acceleration=10,14 --repeat 2 --out "$tmp/one" >"$tmp/o" 2>"$tmp/e"
+check_status "a map with other values in the folder exits 2" 2 $? "$tmp/e"
+check_has "it names the values" "$tmp/e" "the values of excitation.frequency differ: 3 values 120 .. 124 there, 4 values 120 .. 126"
+listing "$tmp/one" >"$tmp/after"
+check "the refused commands changed nothing in the folder" cmp -s "$tmp/before" "$tmp/after"
+mkdir "$tmp/other" && echo x >"$tmp/other/notes.txt"
+small "$tmp/other" >"$tmp/o" 2>"$tmp/e"
+check_status "a folder with other files exits 2" 2 $? "$tmp/e"
+check "... and is left as it was" test "$(ls "$tmp/other")" = notes.txt
+bad() { # bad DESCRIPTION MESSAGE OPTIONS...: exit 2, MESSAGE, no folder
+    description=$1
+    message=$2
+    shift 2
+    "$bin" map configs/fig6.ini --set run.t_end=0.2 "$@" --out "$tmp/bad" >"$tmp/o" 2>"$tmp/e"
+    check_status "$description exits 2" 2 $? "$tmp/e"
+    check_has "$description: the message" "$tmp/e" "$message"
+    check "$description: no folder made" test ! -e "$tmp/bad"
+}
+bad "an unknown --vary field" "--vary excitation.freq=1,2: unknown field excitation.freq" --vary excitation.freq=1,2
+bad "an unknown --set field" "--set slider.colour=red: unknown field [slider] colour" --set slider.colour=red \
+    --vary excitation.frequency=1,2
+bad "an empty range" "empty range" --vary excitation.frequency=120:120:1
+bad "an inverted range" "inverted range: FROM 130 is above TO 120" --vary excitation.frequency=130:120:1
+bad "a shard index out of range" "--shard 5/4: shard index out of range; allowed: 1 to 4" \
+    --vary excitation.frequency=120,124 --shard 5/4
+bad "a value out of range" "[excitation] frequency = 0: out of range" --vary excitation.frequency=0,120
+bad "a start outside the clamps" "cannot run" --vary run.s0=0.01,0.3
+"$bin" map-merge "$tmp/none" >"$tmp/o" 2>"$tmp/e"
+check_status "map-merge of a folder without a map exits 2" 2 $? "$tmp/e"
+
+# ---- a scene with a transducer: its harvested power in the tables
+"$bin" map configs/fig6.ini --set transducer.load=resistor --set run.t_end=0.2 --vary excitation.frequency=120,124 \
+    --vary excitation.acceleration=10,14 --jobs 2 --out "$tmp/power" >"$tmp/o" 2>"$tmp/e"
+check_status "a map with a transducer exits 0" 0 $? "$tmp/e"
+if report=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+                     !($c["power_w"] > 0 && $c["energy_j"] > 0) { print "case " $1 ": " $c["power_w"] ", " $c["energy_j"]; bad = 1 }
+                     END { exit bad || NR != 5 }' "$tmp/power/runs.csv"); then
+    pass "with a transducer every run has its power and energy"
+else
+    fail "with a transducer every run has its power and energy" "$report"
+fi
+check "without one they are nan" test "$(cut -d, -f18 "$tmp/one/runs.csv" | sort -u | tr '\n' ' ')" = "nan power_w "
+
+# ---- heatmaps (gnuplot: Debian's gnuplot-nox, which make maps installs)
+if command -v gnuplot >/dev/null 2>&1; then
+    "$bin" map-plot "$tmp/one" --mark 122,12,here --out "$tmp/plot" >"$tmp/o" 2>"$tmp/e"
+    check_status "map-plot exits 0" 0 $? "$tmp/e"
+    for figure in outcome agreement s_final s_spread amp_h; do
+        check "map-plot draws $figure" test -s "$tmp/plot_$figure.png"
+    done
+    check "map-plot draws no power figure without a transducer" test ! -e "$tmp/plot_power.png"
+    "$bin" map-plot "$tmp/power" --out "$tmp/plot_t" >"$tmp/o" 2>"$tmp/e"
+    check_status "map-plot of a map with a transducer exits 0" 0 $? "$tmp/e"
+    check "... and draws its power" test -s "$tmp/plot_t_power.png"
+    check_has "map-plot's grid has the six cells" "$tmp/plot.dat" "2 1 "
+else
+    echo "check_map: map-plot not checked: gnuplot is not installed (apt-get install gnuplot-nox)"
+fi
+"$bin" map-plot "$tmp/one" --mark 150,12,far --out "$tmp/plot" >"$tmp/o" 2>"$tmp/e"
+check_status "map-plot with a mark off the map exits 2" 2 $? "$tmp/e"
+"$bin" map-plot "$tmp/whole" --out "$tmp/plot" >"$tmp/o" 2>"$tmp/e"
+check_status "map-plot of a map of one varied field exits 2" 2 $? "$tmp/e"
+check_has "... saying it needs two" "$tmp/e" "two different varied fields"
+
+# ---- the outcome classes of the papers' six scenarios (docs/validation.md
+# section 7): the class most of 3 starts end in. 18 runs of 60-120 s: the
+# plain double and float builds do them, the sanitizer pass (robustness-asan,
+# which sets ASAN_OPTIONS; several times slower) checks the rest.
+if [ -n "${ASAN_OPTIONS:-}" ]; then
+    echo "check_map: the six scenarios are left to the plain builds (ASAN_OPTIONS is set)"
+    echo "check_map: $passed passed, $failed failed ($bin)"
+    [ "$failed" -eq 0 ]
+    exit
+fi
+for scene in fig6 fig7 fig8 fig9 fig12a fig12b; do echo "$scene"; done |
+    xargs -P 2 -I '{}' "$bin" map configs/'{}'.ini --repeat 3 --jobs 1 --out "$tmp/scene_{}" \
+        >"$tmp/o" 2>"$tmp/e"
+for pair in fig6:signature fig7:trivial fig8:relaxation fig9:self_damping fig12a:trivial fig12b:signature; do
+    scene=${pair%%:*}
+    want=${pair#*:}
+    got=$(tail -n 1 "$tmp/scene_$scene/map.csv" 2>/dev/null | cut -d, -f3,4)
+    if [ "${got%%,*}" = "$want" ]; then
+        pass "$scene: $want (agreement ${got#*,} of 3 starts)"
+    else
+        fail "$scene: $want" "got ${got:-nothing}; $(cat "$tmp/e")"
+    fi
+done
+
+echo "check_map: $passed passed, $failed failed ($bin)"
+[ "$failed" -eq 0 ]
