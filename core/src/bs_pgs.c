@@ -30,7 +30,7 @@
  * their rows of G are nearly parallel and Gauss-Seidel crawls (hundreds of
  * sweeps, docs/model.md 9.5). solve_pair does one sweep for the modes, then
  * the active-set method: the modes the sweep reached define a linear system
- * in the unknowns they leave free (Gaussian
+ * in the unknowns they leave unset (Gaussian
  * elimination with partial pivoting, active_set_solve; redundant rows get the
  * basic solution); if its solution breaks a law, next_modes picks the modes
  * of the next trial (below) and the system is solved again; a mode pair that

@@ -200,27 +200,17 @@ static int parse_options(int argc, char **argv, const char *command, twin_cli *c
 
 static int load_scene(const twin_cli *c, scene_file *file, bs_scene *scene, scene_model *model)
 {
-    char err[1024], section[64], key[64];
+    char err[1024];
     int i;
     if (scene_load(c->scene_path, file, err, sizeof err) != 0) {
         cli_error("%s", err);
         return -1;
     }
-    for (i = 0; i < c->set_count; ++i) {
-        const char *dot = strchr(c->sets[i], '.'), *eq = strchr(c->sets[i], '=');
-        if (!(dot < eq) || dot - c->sets[i] >= (long)sizeof section || eq - dot - 1 >= (long)sizeof key) {
-            cli_error("--set %s: allowed: SECTION.KEY=VALUE", c->sets[i]);
-            return -1;
-        }
-        memcpy(section, c->sets[i], (size_t)(dot - c->sets[i]));
-        section[dot - c->sets[i]] = 0;
-        memcpy(key, dot + 1, (size_t)(eq - dot - 1));
-        key[eq - dot - 1] = 0;
-        if (scene_set(file, section, key, eq + 1, "--set", err, sizeof err) != 0) {
+    for (i = 0; i < c->set_count; ++i) /* checked as a file line is (host/lib/scene_ini.h) */
+        if (scene_set_assignment(file, "--set", c->sets[i], err, sizeof err) != 0) {
             cli_error("%s", err);
             return -1;
         }
-    }
     if (!isnan(c->s0)) {
         snprintf(err, sizeof err, "%.17g", c->s0);
         if (scene_set(file, "run", "s0", err, "--s0", err + 512, 512) != 0) {
