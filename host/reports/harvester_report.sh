@@ -87,27 +87,23 @@ for load in none $LOADS; do
     table="$table$(summary "$load")
 "
 done
-# the best load: largest mean power over the last 10 s, averaged over the starts
-best=$(for load in $LOADS; do
+# per load: its mean power over the last 10 s, averaged over the starts;
+# the best load is the largest
+for load in $LOADS; do
     k=0
     while [ "$k" -lt "$STARTS" ]; do
         json power_last_w "$TMP/j_${load}_$k.json"
         k=$((k + 1))
     done | awk -v load="$load" '{ s += $1; n++ } END { printf "%s %.9g\n", load, s / n }'
-done | sort -k2 -g | tail -1 | cut -d' ' -f1)
+done | sort -k2 -g > "$TMP/load_power"
+best=$(tail -1 "$TMP/load_power" | cut -d' ' -f1)
 echo "harvester_report: best load $best Ohm (largest mean power over the last 10 s)" >&2
 # how flat the optimum is: the loads whose power is within 2 % of the best's
-flat=$(for load in $LOADS; do
-    k=0
-    while [ "$k" -lt "$STARTS" ]; do
-        json power_last_w "$TMP/j_${load}_$k.json"
-        k=$((k + 1))
-    done | awk -v load="$load" '{ s += $1; n++ } END { printf "%s %.9g\n", load, s / n }'
-done | sort -k2 -g | awk '{ l[NR] = $1; p[NR] = $2 } END { best = p[NR]; lo = ""; for (i = 1; i <= NR; ++i) if (p[i] >= 0.98 * best) {
+flat=$(awk '{ l[NR] = $1; p[NR] = $2 } END { best = p[NR]; lo = ""; for (i = 1; i <= NR; ++i) if (p[i] >= 0.98 * best) {
         v = l[i] + 0; if (lo == "" || v < lo) lo = v; if (hi == "" || v > hi) hi = v }
         printf "every load of the grid from %g to %g Ohm comes within 2 %% of it. ", lo, hi
         if (lo <= 71e3 && 71e3 <= hi) printf "So on this scene, where the contacts and the hardening set the amplitude, the weak-coupling rule still lands within the flat optimum"
-        else printf "So the weak-coupling rule 1/(Omega C_p) misses the optimum here" }')
+        else printf "So the weak-coupling rule 1/(Omega C_p) misses the optimum here" }' "$TMP/load_power")
 # does the slider still adapt? every run of a load ends (mean of its starts)
 # within 0.005 of the runs without transducer, and jumps to the high branch
 adapt=$(for load in $LOADS; do
