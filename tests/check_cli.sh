@@ -103,6 +103,16 @@ for bad in nan:m_nan.csv:15:finite gap:m_gap.csv:16:gap rate:m_rate.csv:sample_r
         || pass "twin on a stream with a $what writes no estimates"
 done
 
+# ---- response maps: a schedule wider than the observer's maps cover, and
+# --map-frequencies out of order, are refused saying so (docs/twin.md, "Observer")
+"$bin" twin-gains configs/fig6.ini --noise 1e-6 --set excitation.schedule=0:60:14,10:124:14 >/dev/null 2>"$tmp/e"
+check_status "twin-gains on a schedule from 60 Hz to 124 Hz exits 2" 2 $? "$tmp/e"
+check_has "... naming the span, the maps it needs and the option" "$tmp/e" \
+    "the [excitation] schedule spans 60 Hz to 124 Hz, which needs 38 response maps spaced by 1.02; at most 8 fit (name the frequencies the twin will meet with --map-frequencies)"
+"$bin" twin-gains configs/fig6.ini --noise 1e-6 --map-frequencies 124,110 >/dev/null 2>"$tmp/e"
+check_status "twin-gains --map-frequencies 124,110 exits 2" 2 $? "$tmp/e"
+check_has "... naming the frequency out of order" "$tmp/e" "--map-frequencies 124,110: frequency 2: allowed: 1 to 8 frequencies [Hz], > 0, ascending"
+
 # ---- a negative load is refused with its file, line and range
 printf '[scene]\nbase = mssp2023.ini\n[transducer]\nload = resistor\nresistance = -5\n' >"$tmp/negative.ini"
 "$bin" run "$tmp/negative.ini" --out "$tmp/negative.csv" >/dev/null 2>"$tmp/e"

@@ -42,6 +42,16 @@ extern "C" {
 /* Points of the response map (the first-harmonic response against s). */
 #define BS_OBSERVER_TABLE 48
 
+/* Room for response maps, one per excitation (frequency, amplitude): an
+ * ambient frequency that moves is followed map to map. A firmware whose
+ * excitation keeps one frequency saves 2 x 48 values per map with
+ * -DBS_OBSERVER_MAPS=1 (core and application compiled with the same value,
+ * as for BS_OBSERVER_MAX_LATENCY; gains printed by `beamslider twin-gains`
+ * refuse to compile with fewer than they carry). */
+#ifndef BS_OBSERVER_MAPS
+#define BS_OBSERVER_MAPS 8
+#endif
+
 /* What the measured beam signal is. */
 typedef enum bs_observer_signal {
     BS_SIGNAL_DEFLECTION = 0, /* w(4L/7) [m], no base motion (bs_sim_sensor) */
@@ -62,18 +72,20 @@ typedef struct bs_observer_gains {
                                                         displacement per unit of e */
     bs_real gain_u[BS_OBSERVER_GAINS][BS_MAX_MODES]; /* L_u: modal velocity per unit of e */
     bs_real gain_v[BS_OBSERVER_GAINS];  /* L_v: patch voltage per unit of e (0 without a transducer) */
-    int table_count;                    /* points of the response map, 2 .. BS_OBSERVER_TABLE */
-    bs_real table_frequency;            /* the excitation the map was made at: f_ex [Hz] */
-    bs_real table_accel;                /* and its amplitude a [m/s^2] */
-    bs_real table_s[BS_OBSERVER_TABLE];     /* s, ascending, within [stop_min / L, 1/2] */
-    bs_real table_stiff[BS_OBSERVER_TABLE]; /* |H| [signal unit per m/s^2] of the branch below its
-                                               resonance (Re H < 0: the low-amplitude branch near
-                                               the clamp and the hardened high branch), from a
-                                               PCS sweep from the clamp toward the centre */
-    bs_real table_soft[BS_OBSERVER_TABLE];  /* |H| of the branch above it (Re H > 0: the
-                                               low-amplitude branch toward the centre), from a PCS
-                                               sweep from the centre toward the clamp; in either,
-                                               a negative value: no such branch at that s */
+    int map_count;                      /* response maps, 1 .. BS_OBSERVER_MAPS */
+    bs_real map_frequency[BS_OBSERVER_MAPS]; /* the excitation map m was made at: f_ex [Hz], ascending */
+    bs_real map_accel[BS_OBSERVER_MAPS];     /* and its amplitude a [m/s^2] */
+    int table_count;                    /* points of each response map, 2 .. BS_OBSERVER_TABLE */
+    bs_real table_s[BS_OBSERVER_TABLE]; /* s, ascending, within [stop_min / L, 1/2] */
+    bs_real table_stiff[BS_OBSERVER_MAPS][BS_OBSERVER_TABLE]; /* map m: |H| [signal unit per m/s^2]
+                                               of the branch below its resonance (Re H < 0: the
+                                               low-amplitude branch near the clamp and the
+                                               hardened high branch), from a PCS sweep from the
+                                               clamp toward the centre */
+    bs_real table_soft[BS_OBSERVER_MAPS][BS_OBSERVER_TABLE]; /* |H| of the branch above it (Re H > 0:
+                                               the low-amplitude branch toward the centre), from a
+                                               PCS sweep from the centre toward the clamp; in
+                                               either, a negative value: no such branch at that s */
 } bs_observer_gains;
 
 /* Run-time settings (bs_observer_defaults). */
@@ -87,9 +99,9 @@ typedef struct bs_observer_options {
                                   the response map's uncertainty (a model off by 3 % in frequency
                                   moves it by ~0.01) */
     bs_real sigma_hold;      /* no s correction while s_sigma exceeds this [1], > 0 */
-    bs_real excitation_tolerance; /* the map is used only while the measured excitation is within
-                                     this relative distance of the map's (frequency: a tenth of
-                                     it), > 0 */
+    bs_real excitation_tolerance; /* a map is used only while the measured excitation is within
+                                     this relative distance of its own (frequency: a tenth of
+                                     it; the map nearest in frequency), > 0 */
     bs_real settle_time;     /* no s correction during the first settle_time [s] (the lock-in
                                 filling), >= 0 */
 } bs_observer_options;

@@ -44,8 +44,10 @@
  *      ds/dt = clamp(position_gain (s_error -+ deadband), -rate, rate)
  *    within the clamp stops, never across s = 1/2, and only while
  *    s_sigma < sigma_hold and the measured excitation (amplitude
- *    sqrt(2 <a^2>), frequency sqrt(kappa^2 - 1/tau^2) / 2 pi) is the map's
- *    within excitation_tolerance (the map holds for that excitation only).
+ *    sqrt(2 <a^2>), frequency sqrt(kappa^2 - 1/tau^2) / 2 pi) is that of
+ *    the map nearest in frequency within excitation_tolerance (a map holds
+ *    for its excitation only; a scene whose ambient frequency moves carries
+ *    maps at several, up to BS_OBSERVER_MAPS).
  *    Errors up to position_deadband are not corrected: with a model whose
  *    frequencies are off, the map is off too (3 % moves it by ~0.01 on
  *    fig6), and within that band the twin's own slider dynamics, driven by
@@ -115,20 +117,27 @@ static int valid_options(const bs_observer_options *o)
            && o->settle_time >= BS_R(0.0);
 }
 
-/* The map: s ascending within (0, 1/2], everything finite (|H| < 0: no
- * such branch at that s), an excitation it was made at. */
+/* The maps: s ascending within (0, 1/2], everything finite (|H| < 0: no
+ * such branch at that s), each with the excitation it was made at, in
+ * ascending frequency. */
 static int valid_table(const bs_observer_gains *g)
 {
-    int i;
-    if (g->table_count < 2 || g->table_count > BS_OBSERVER_TABLE || !finite(g->table_frequency)
-        || !(g->table_frequency > BS_R(0.0)) || !finite(g->table_accel) || !(g->table_accel > BS_R(0.0)))
+    int i, m;
+    if (g->table_count < 2 || g->table_count > BS_OBSERVER_TABLE || g->map_count < 1
+        || g->map_count > BS_OBSERVER_MAPS)
         return 0;
+    for (m = 0; m < g->map_count; ++m)
+        if (!finite(g->map_frequency[m]) || !(g->map_frequency[m] > BS_R(0.0)) || !finite(g->map_accel[m])
+            || !(g->map_accel[m] > BS_R(0.0)) || (m > 0 && !(g->map_frequency[m] > g->map_frequency[m - 1])))
+            return 0;
     for (i = 0; i < g->table_count; ++i) {
-        if (!finite(g->table_s[i]) || !finite(g->table_stiff[i]) || !finite(g->table_soft[i])
-            || !(g->table_s[i] > BS_R(0.0) && g->table_s[i] <= BS_R(0.5)))
+        if (!finite(g->table_s[i]) || !(g->table_s[i] > BS_R(0.0) && g->table_s[i] <= BS_R(0.5)))
             return 0;
         if (i > 0 && !(g->table_s[i] > g->table_s[i - 1]))
             return 0;
+        for (m = 0; m < g->map_count; ++m)
+            if (!finite(g->table_stiff[m][i]) || !finite(g->table_soft[m][i]))
+                return 0;
     }
     return 1;
 }
@@ -423,13 +432,20 @@ static int invert_map(const bs_observer_gains *g, const bs_real *h, bs_real targ
     return found;
 }
 
-/* 1 while the measured excitation is the map's within the tolerance. */
-static int excitation_matches(const bs_observer *obs, bs_real frequency, bs_real amplitude)
+/* The map nearest in frequency to the measured excitation, if that is its
+ * own within the tolerance; else -1. */
+static int matching_map(const bs_observer *obs, bs_real frequency, bs_real amplitude)
 {
     const bs_observer_gains *g = obs->gains;
     const bs_real tol = obs->options.excitation_tolerance;
-    return bs_fabs(frequency - g->table_frequency) <= BS_R(0.1) * tol * g->table_frequency
-           && bs_fabs(amplitude - g->table_accel) <= tol * g->table_accel;
+    int m, nearest = 0;
+    for (m = 1; m < g->map_count; ++m)
+        if (bs_fabs(frequency - g->map_frequency[m]) < bs_fabs(frequency - g->map_frequency[nearest]))
+            nearest = m;
+    if (bs_fabs(frequency - g->map_frequency[nearest]) <= BS_R(0.1) * tol * g->map_frequency[nearest]
+        && bs_fabs(amplitude - g->map_accel[nearest]) <= tol * g->map_accel[nearest])
+        return nearest;
+    return -1;
 }
 
 /* 5 and 6: s_error, s_sigma and the reported quantities from the lock-in. */
@@ -442,7 +458,7 @@ static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
     complex_real h_m, h_t, h_w, ratio;
     bs_real hm_abs, kappa_sq, omega_sq, s_near, s_cross = BS_R(0.0), slope = BS_R(0.0), s_error, sigma_h;
     bs_real var_spread;
-    int mirror;
+    int mirror, map;
 
     est->s = bs_sim_position(sim);
     est->power = mean(&obs->power);
@@ -462,11 +478,13 @@ static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
         ratio = complex_div(h_m, h_t);
         est->phase_error = angle_of(ratio.im, ratio.re);
     }
-    if (!excitation_matches(obs, est->frequency, bs_sqrt(BS_R(2.0) * aa)))
+    map = matching_map(obs, est->frequency, bs_sqrt(BS_R(2.0) * aa));
+    if (map < 0)
         return;
     mirror = est->s > BS_R(0.5);
     s_near = mirror ? BS_R(1.0) - est->s : est->s;
-    if (!invert_map(g, h_m.re < BS_R(0.0) ? g->table_stiff : g->table_soft, hm_abs, s_near, &s_cross, &slope)
+    if (!invert_map(g, h_m.re < BS_R(0.0) ? g->table_stiff[map] : g->table_soft[map], hm_abs, s_near, &s_cross,
+                    &slope)
         || slope == BS_R(0.0))
         return;
     s_error = mirror ? s_near - s_cross : s_cross - s_near;

@@ -39,7 +39,7 @@ static const char twin_usage[] =
     "                       [--latency S] [--noise SIGMA] [--accel-noise SIGMA] [--force-noise N]\n"
     "                       [--s0 S] [--every N] [--open-loop] [--no-position] [--lockin TAU]\n"
     "                       [--position-gain G] [--position-rate R] [--deadband D] [--score-after T] [--tolerance D]\n"
-    "                       [--set SECTION.KEY=VALUE]...\n"
+    "                       [--map-frequencies F,F,...] [--set SECTION.KEY=VALUE]...\n"
     "  runs the scene as a twin on the measured base acceleration, corrected from the measured\n"
     "  signal (docs/twin.md, \"Observer\"); EST.csv every N steps: t, s_hat, s_sigma, amplitude,\n"
     "  power, y, y_hat, s_true (if the file has it), phase_error, s_error. JSON summary on stdout.\n"
@@ -49,14 +49,18 @@ static const char twin_usage[] =
     "  a test stream: the scene (perturbed) as the plant, signals with white noise SNR dB below\n"
     "  their RMS and B-bit quantisation over +-2x their largest value, the signal --latency late.\n"
     "usage: beamslider twin-gains SCENE.ini --noise SIGMA [--signal deflection|voltage] [--latency S]\n"
-    "                       [--accel-noise SIGMA] [--force-noise N] [--name NAME] [--set ...]\n"
-    "  the observer's constants (bs_observer_gains) as a C header on stdout.\n";
+    "                       [--accel-noise SIGMA] [--force-noise N] [--map-frequencies F,F,...]\n"
+    "                       [--name NAME] [--set ...]\n"
+    "  the observer's constants (bs_observer_gains) as a C header on stdout. Response maps at\n"
+    "  --map-frequencies [Hz, ascending], else at the scene's excitation or across its schedule.\n";
 
 /* The options of the three commands (each uses some). */
 typedef struct twin_cli {
     const char *scene_path, *out_path, *measured_path, *name;
     const char *sets[MAX_SETS];
     int set_count;
+    int map_count;              /* --map-frequencies (0: from the scene) */
+    double map_frequency[BS_OBSERVER_MAPS];
     int signal;                 /* -1: not given */
     double latency;             /* [s] */
     double noise, accel_noise;  /* NAN: not given */
@@ -119,6 +123,28 @@ static void cli_defaults(twin_cli *c)
     c->name = "bs_observer_gains_scene";
 }
 
+/* --map-frequencies F,F,...: 1 to BS_OBSERVER_MAPS frequencies [Hz], > 0,
+ * ascending. Returns 0, or -1 after reporting what is wrong. */
+static int parse_map_frequencies(twin_cli *c, const char *value)
+{
+    const char *p = value;
+    c->map_count = 0;
+    for (;;) {
+        char *end;
+        const double f = strtod(p, &end);
+        if (c->map_count == BS_OBSERVER_MAPS || end == p || (*end != ',' && *end != '\0') || !isfinite(f)
+            || !(f > 0.0) || (c->map_count > 0 && !(f > c->map_frequency[c->map_count - 1]))) {
+            cli_error("--map-frequencies %s: frequency %d: allowed: 1 to %d frequencies [Hz], > 0, ascending, "
+                      "separated by commas", value, c->map_count + 1, BS_OBSERVER_MAPS);
+            return -1;
+        }
+        c->map_frequency[c->map_count++] = f;
+        if (*end == '\0')
+            return 0;
+        p = end + 1;
+    }
+}
+
 /* One option with a value; returns 0, 1 if it is not an option of this
  * table, -1 after reporting a bad value. */
 static int parse_valued(twin_cli *c, const char *option, const char *value)
@@ -138,7 +164,8 @@ static int parse_valued(twin_cli *c, const char *option, const char *value)
             return -1;
         }
         c->sets[c->set_count++] = value;
-    } else if (!strcmp(option, "--latency")) return parse_number(option, value, 0.0, 1.0, &c->latency);
+    } else if (!strcmp(option, "--map-frequencies")) return parse_map_frequencies(c, value);
+    else if (!strcmp(option, "--latency")) return parse_number(option, value, 0.0, 1.0, &c->latency);
     else if (!strcmp(option, "--noise")) return parse_number(option, value, 1e-300, HUGE_VAL, &c->noise);
     else if (!strcmp(option, "--accel-noise")) return parse_number(option, value, 0.0, HUGE_VAL, &c->accel_noise);
     else if (!strcmp(option, "--force-noise")) return parse_number(option, value, 0.0, HUGE_VAL, &c->force_noise);
@@ -535,6 +562,8 @@ static int design(const twin_cli *c, const scene_file *file, const scene_model *
     o.force_noise = c->force_noise;
     o.accel_noise = isnan(accel_noise) ? 0.0 : accel_noise;
     o.latency = (int)latency_steps(c, file->params.dt);
+    o.map_count = c->map_count;
+    memcpy(o.map_frequency, c->map_frequency, sizeof o.map_frequency);
     if (o.latency > BS_OBSERVER_MAX_LATENCY) {
         cli_error("--latency %g: at most %d steps (%g s)", c->latency, BS_OBSERVER_MAX_LATENCY,
                   BS_OBSERVER_MAX_LATENCY * file->params.dt);

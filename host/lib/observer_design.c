@@ -51,6 +51,7 @@
  * far above it, and on the low branch the slider bounces.
  */
 #include "observer_design.h"
+#include "schedule.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -395,8 +396,66 @@ static bs_status map_point(bs_sim *sim, double s, const observer_design_options 
     return status;
 }
 
-/* The response map: PCS sweeps of the scene over [stop_min / L, 1/2], up from
- * the clamp (stiff branch) and down from the centre (soft branch). */
+/* The excitations of the maps (observer_design's rule) into gains. Returns
+ * 0, or -1 with a message in err. */
+static int map_excitations(const scene_file *file, const bs_scene *scene, const observer_design_options *o,
+                           bs_observer_gains *gains, char *err, size_t err_size)
+{
+    schedule sched;
+    char why[160];
+    int m, k;
+
+    if (schedule_parse(file->params.schedule, &sched, why, sizeof why) != 0) {
+        snprintf(err, err_size, "observer design: [excitation] schedule: %s", why);
+        return -1;
+    }
+    if (o->map_count > 0) {
+        gains->map_count = o->map_count;
+        for (m = 0; m < o->map_count; ++m)
+            gains->map_frequency[m] = (bs_real)o->map_frequency[m];
+    } else if (sched.points == 0) {
+        gains->map_count = 1;
+        gains->map_frequency[0] = scene->frequency;
+    } else {
+        double lo = sched.frequency[0], hi = sched.frequency[0];
+        int count;
+        for (k = 1; k < sched.points; ++k) {
+            lo = fmin(lo, sched.frequency[k]);
+            hi = fmax(hi, sched.frequency[k]);
+        }
+        count = 1 + (int)ceil(log(hi / lo) / log(OBSERVER_MAP_SPACING) - 1e-9);
+        if (count > BS_OBSERVER_MAPS) {
+            snprintf(err, err_size, "observer design: the [excitation] schedule spans %g Hz to %g Hz, which needs %d "
+                     "response maps spaced by %g; at most %d fit (name the frequencies the twin will meet with "
+                     "--map-frequencies)", lo, hi, count, OBSERVER_MAP_SPACING, BS_OBSERVER_MAPS);
+            return -1;
+        }
+        gains->map_count = count;
+        for (m = 0; m < count; ++m)
+            gains->map_frequency[m] = (bs_real)(count == 1 ? lo : lo * pow(hi / lo, (double)m / (count - 1)));
+    }
+    for (m = 0; m < gains->map_count; ++m) {
+        const double f = (double)gains->map_frequency[m];
+        double a = (double)scene->base_accel;
+        int nearest = 0;
+        for (k = 1; k < sched.points; ++k)
+            if (fabs(sched.frequency[k] - f) < fabs(sched.frequency[nearest] - f))
+                nearest = k;
+        if (sched.points > 0)
+            a = sched.amplitude[nearest];
+        gains->map_accel[m] = (bs_real)a;
+        if (!(a > 0.0)) {
+            snprintf(err, err_size, "observer design: the response map at %g Hz has no excitation (amplitude %g)",
+                     (double)gains->map_frequency[m], a);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* The response maps: at each map's excitation, PCS sweeps of the scene over
+ * [stop_min / L, 1/2], up from the clamp (stiff branch) and down from the
+ * centre (soft branch). */
 static int response_map(const scene_file *file, const bs_scene *scene, const observer_design_options *o,
                         bs_observer_gains *gains, char *err, size_t err_size)
 {
@@ -404,29 +463,32 @@ static int response_map(const scene_file *file, const bs_scene *scene, const obs
     const bs_solver_options solver = scene_solver(&file->params);
     const double s_low = (double)scene->stop_min / (double)scene->length;
     const int count = BS_OBSERVER_TABLE;
-    int i, branch;
+    int i, m, branch;
 
+    if (map_excitations(file, scene, o, gains, err, err_size) != 0)
+        return -1;
     gains->table_count = count;
-    gains->table_frequency = scene->frequency;
-    gains->table_accel = scene->base_accel;
     for (i = 0; i < count; ++i)
         gains->table_s[i] = (bs_real)(s_low + (0.5 - s_low) * i / (count - 1));
-    for (branch = 0; branch < 2; ++branch) { /* 0: stiff, up from the clamp; 1: soft, down from the centre */
-        bs_status status = bs_sim_init(&sim, scene, BS_MODEL_PCS, branch ? BS_R(0.5) : gains->table_s[0]);
-        if (status == BS_OK)
-            status = bs_sim_set_solver(&sim, &solver);
-        for (i = 0; status == BS_OK && i < count; ++i) {
-            const int j = branch ? count - 1 - i : i;
-            double h = 0.0;
-            status = map_point(&sim, (double)gains->table_s[j], o, !branch, &h);
-            (branch ? gains->table_soft : gains->table_stiff)[j] = (bs_real)h;
+    for (m = 0; m < gains->map_count; ++m)
+        for (branch = 0; branch < 2; ++branch) { /* 0: stiff, up from the clamp; 1: soft, down from the centre */
+            bs_status status = bs_sim_init(&sim, scene, BS_MODEL_PCS, branch ? BS_R(0.5) : gains->table_s[0]);
+            if (status == BS_OK)
+                status = bs_sim_set_solver(&sim, &solver);
+            if (status == BS_OK)
+                status = bs_sim_set_excitation(&sim, gains->map_frequency[m], gains->map_accel[m]);
+            for (i = 0; status == BS_OK && i < count; ++i) {
+                const int j = branch ? count - 1 - i : i;
+                double h = 0.0;
+                status = map_point(&sim, (double)gains->table_s[j], o, !branch, &h);
+                (branch ? gains->table_soft : gains->table_stiff)[m][j] = (bs_real)h;
+            }
+            if (status != BS_OK) {
+                snprintf(err, err_size, "observer design: the response map's PCS sweep at %g Hz stopped: %s",
+                         (double)gains->map_frequency[m], bs_status_text(status));
+                return -1;
+            }
         }
-        if (status != BS_OK) {
-            snprintf(err, err_size, "observer design: the response map's PCS sweep stopped: %s",
-                     bs_status_text(status));
-            return -1;
-        }
-    }
     return 0;
 }
 
@@ -465,6 +527,7 @@ static int kalman_gain(const linear_model *m, const double *c, double force_var,
 
 static int check_options(const scene_data *d, const observer_design_options *o, char *err, size_t err_size)
 {
+    int i;
     if (o->signal == BS_SIGNAL_VOLTAGE && d->load != BS_LOAD_RESISTOR) {
         snprintf(err, err_size, "the voltage signal needs [transducer] load = resistor (the scene's is %s)",
                  d->load == BS_LOAD_NONE ? "none" : "a rectifier, which the linear model cannot follow");
@@ -477,6 +540,17 @@ static int check_options(const scene_data *d, const observer_design_options *o, 
                  "[0, %d] steps, map hold >= 0 and record >= 1 periods", BS_OBSERVER_MAX_LATENCY);
         return -1;
     }
+    if (o->map_count < 0 || o->map_count > BS_OBSERVER_MAPS) {
+        snprintf(err, err_size, "observer design: %d map frequencies; 1 to %d", o->map_count, BS_OBSERVER_MAPS);
+        return -1;
+    }
+    for (i = 0; i < o->map_count; ++i)
+        if (!(o->map_frequency[i] > 0.0 && isfinite(o->map_frequency[i]))
+            || (i > 0 && !(o->map_frequency[i] > o->map_frequency[i - 1]))) {
+            snprintf(err, err_size, "observer design: map frequency %d (%g Hz) must be finite, > 0 and above the "
+                     "one before", i + 1, o->map_frequency[i]);
+            return -1;
+        }
     return 0;
 }
 
@@ -556,7 +630,10 @@ int observer_print_gains(FILE *out, const bs_observer_gains *g, const char *name
     int failed = 0, j;
     failed |= fprintf(out, "/* %s\n * generated by `beamslider twin-gains`: the observer's constants "
                            "(core/include/bs_observer.h, docs/twin.md). */\n", comment) < 0;
-    failed |= fprintf(out, "#include \"bs_observer.h\"\n\nstatic const bs_observer_gains %s = {\n", name) < 0;
+    failed |= fprintf(out, "#include \"bs_observer.h\"\n\n#if BS_OBSERVER_MAPS < %d\n#error \"%s carries %d "
+                           "response maps: compile with -DBS_OBSERVER_MAPS=%d or more\"\n#endif\n\n",
+                      g->map_count, name, g->map_count, g->map_count) < 0;
+    failed |= fprintf(out, "static const bs_observer_gains %s = {\n", name) < 0;
     failed |= fprintf(out, "    /* n_modes */ %d,\n    /* signal */ %d,\n    /* latency */ %d,\n", g->n_modes,
                       g->signal, g->latency) < 0;
     failed |= fprintf(out, "    /* noise */ BS_R(%s),\n    /* gain_count */ %d,\n", literal(text, (double)g->noise),
@@ -570,12 +647,17 @@ int observer_print_gains(FILE *out, const bs_observer_gains *g, const char *name
         failed |= print_array(out, "", g->gain_u[j], g->n_modes);
     failed |= fprintf(out, "    },\n") < 0;
     failed |= print_array(out, "gain_v", g->gain_v, g->gain_count);
+    failed |= fprintf(out, "    /* map_count */ %d,\n", g->map_count) < 0;
+    failed |= print_array(out, "map_frequency", g->map_frequency, g->map_count);
+    failed |= print_array(out, "map_accel", g->map_accel, g->map_count);
     failed |= fprintf(out, "    /* table_count */ %d,\n", g->table_count) < 0;
-    failed |= fprintf(out, "    /* table_frequency */ BS_R(%s),\n", literal(text, (double)g->table_frequency)) < 0;
-    failed |= fprintf(out, "    /* table_accel */ BS_R(%s),\n", literal(text, (double)g->table_accel)) < 0;
     failed |= print_array(out, "table_s", g->table_s, g->table_count);
-    failed |= print_array(out, "table_stiff", g->table_stiff, g->table_count);
-    failed |= print_array(out, "table_soft", g->table_soft, g->table_count);
-    failed |= fprintf(out, "};\n") < 0;
+    failed |= fprintf(out, "    /* table_stiff */ {\n") < 0;
+    for (j = 0; j < g->map_count; ++j)
+        failed |= print_array(out, "", g->table_stiff[j], g->table_count);
+    failed |= fprintf(out, "    },\n    /* table_soft */ {\n") < 0;
+    for (j = 0; j < g->map_count; ++j)
+        failed |= print_array(out, "", g->table_soft[j], g->table_count);
+    failed |= fprintf(out, "    },\n};\n") < 0;
     return failed ? -1 : 0;
 }

@@ -22,11 +22,20 @@ typedef struct observer_design_options {
                              0 .. BS_OBSERVER_MAX_LATENCY */
     int map_hold;         /* response map: excitation periods held at each point before ... (>= 0) */
     int map_record;       /* ... the first harmonic is taken over this many (>= 1) */
+    int map_count;        /* response maps at map_frequency[], 1 .. BS_OBSERVER_MAPS; 0: from the
+                             scene (observer_design) */
+    double map_frequency[BS_OBSERVER_MAPS]; /* [Hz], > 0, ascending */
 } observer_design_options;
+
+/* Map frequencies are spaced by at most this ratio, so that every frequency
+ * between the first and the last is within 1 % of one (the observer's
+ * default frequency tolerance). */
+#define OBSERVER_MAP_SPACING 1.02
 
 /* Defaults (observer_design_defaults): deflection, no latency, no
  * acceleration noise, force noise OBSERVER_DEFAULT_FORCE_NOISE, map 60 + 40
- * periods per point; noise has no default (the caller states it). */
+ * periods per point, maps from the scene; noise has no default (the caller
+ * states it). */
 #define OBSERVER_DEFAULT_FORCE_NOISE 1e-3
 #define OBSERVER_DEFAULT_MAP_HOLD 60
 #define OBSERVER_DEFAULT_MAP_RECORD 40
@@ -38,10 +47,16 @@ observer_design_options observer_design_defaults(double noise);
  * the linear modal model at the scene's dt (the core's own step without
  * contacts and stretching, with the patch and its resistor), the discrete
  * Riccati equation solved by the structure-preserving doubling algorithm,
- * K = P C^T / (C P C^T + R), gains = Phi^latency K; and the response map
- * over [stop_min / L, 1/2] from two PCS sweeps of scene at its excitation
- * (about 2 x 48 x (hold + record) periods of simulation). Returns 0, or -1
- * with a message in err. */
+ * K = P C^T / (C P C^T + R), gains = Phi^latency K; and a response map
+ * over [stop_min / L, 1/2] from two PCS sweeps of scene at each map
+ * frequency (about 2 x 48 x (hold + record) periods of simulation each).
+ * The map frequencies are options->map_frequency[], or with map_count 0
+ * the scene's excitation frequency, or, for a scene with an [excitation]
+ * schedule, the fewest frequencies spaced by at most OBSERVER_MAP_SPACING
+ * from its lowest to its highest (an error if more than BS_OBSERVER_MAPS
+ * are needed). Each map's amplitude is that of the schedule point nearest
+ * in frequency (without a schedule, the scene's). Returns 0, or -1 with a
+ * message in err. */
 int observer_design(const scene_file *file, const scene_model *model, const bs_scene *scene,
                     const observer_design_options *options, bs_observer_gains *gains, char *err, size_t err_size);
 

@@ -47,8 +47,13 @@ THETA=9.7e-5
 # the decay's RMS, hysteresis 5 noise deviations), is matched by the twin's
 # Young's modulus: E_1 = E (f_plant / f_model)^2, then once more from the
 # model at E_1 (the clamps' rotational stiffness does not scale with E, so
-# the frequency is not exactly proportional to sqrt E). Friction, restitution
-# and coupling are not identified.
+# the frequency is not exactly proportional to sqrt E). With a transducer, the
+# patch voltage is measured too (40 dB noise): v follows the first mode's
+# velocity through the patch's RC, so at the matched frequency the ratio of
+# the RMS of v to that of w(4L/7) between 0.1 s and 0.3 s (the higher modes
+# gone) is proportional to the coupling, and the twin's coupling is scaled
+# by the plant's ratio over its own. Friction and restitution are not
+# identified.
 burst() { # burst DIR: DIR/burst.txt (reference --base-accel) and DIR/burst.csv (run --excitation)
     awk 'BEGIN { dt = 2e-5; pi = atan2(0, -1); w = 2 * pi * 250
         for (k = 0; k < 30000; ++k) { t = k * dt
@@ -72,26 +77,45 @@ decay_frequency() { # decay_frequency SEED < "t w" lines: the decay's frequency 
             }
             printf "%.9g", (c - 1) / (t1 - t0) }'
 }
-model_frequency() { # model_frequency DIR E: the twin's decay frequency with Young's modulus E
+voltage_ratio() { # voltage_ratio SEED < "t w v" lines: RMS of v over RMS of w(4L/7), 0.1 s .. 0.3 s, measured with noise
+    awk -v seed="$1" 'function gauss() { do u = rand(); while (u <= 0); return sqrt(-2 * log(u)) * cos(2 * pi * rand()) }
+        BEGIN { srand(seed); pi = atan2(0, -1) }
+        $1 >= 0.1 && $1 <= 0.3 { n++; w[n] = $2; v[n] = $3; sw += $2; sv += $3; sww += $2 * $2; svv += $3 * $3 }
+        END {
+            nw = 0.01 * sqrt(sww / n); nv = 0.01 * sqrt(svv / n); sw = sv = sww = svv = 0
+            for (i = 1; i <= n; ++i) { y = w[i] + nw * gauss(); x = v[i] + nv * gauss()
+                sw += y; sv += x; sww += y * y; svv += x * x }
+            printf "%.9g", sqrt((svv / n - (sv / n) ^ 2) / (sww / n - (sw / n) ^ 2)) }'
+}
+model_decay() { # model_decay DIR E: DIR/twin_decay.csv, the twin's decay with Young's modulus E
     { cat "$1/c_twin.ini"; printf '[beam]\nyoungs_modulus = %s\n' "$2"; } > "$1/c_twin_e.ini"
     "$BIN" run "$1/c_twin_e.ini" --s0 0.964 --t-end 0.6 --excitation "$1/burst.csv" --out "$1/twin_decay.csv" \
         --every 1 > /dev/null
+}
+model_frequency() { # model_frequency DIR E: the twin's decay frequency with Young's modulus E
+    model_decay "$1" "$2"
     awk -F, 'NR > 1 { print $1, $2 }' "$1/twin_decay.csv" | decay_frequency 1
 }
-commission() { # commission DIR SEED: prints "E_twin f_plant" (plant.ini and twin.ini in DIR)
+commission() { # commission DIR SEED LOAD: prints "E_twin f_plant coupling_twin" (plant.ini and twin.ini in DIR)
     burst "$1"
     # the scenes without their schedule: the burst is the whole excitation
     for f in plant twin; do
         { cat "$1/$f.ini"; printf '[excitation]\nschedule =\n'; } > "$1/c_$f.ini"
     done
-    mkfifo "$1/cfifo"
     "$REF" run "$1/c_plant.ini" --substeps 4 --s0 0.964 --t-end 0.6 --base-accel "$1/burst.txt" \
-        --out "$1/cfifo" --every 1 > /dev/null &
-    fp=$(awk -F, 'NR > 1 { print $1, $2 }' "$1/cfifo" | decay_frequency "$2")
-    wait
-    rm -f "$1/cfifo"
+        --out "$1/plant_decay.csv" --every 1 > /dev/null
+    fp=$(awk -F, 'NR > 1 { print $1, $2 }' "$1/plant_decay.csv" | decay_frequency "$2")
     e1=$(awk -v e="$E" -v a="$fp" -v b="$(model_frequency "$1" "$E")" 'BEGIN { printf "%.9g", e * (a / b) ^ 2 }')
-    awk -v e="$e1" -v a="$fp" -v b="$(model_frequency "$1" "$e1")" 'BEGIN { printf "%.9g %.6f", e * (a / b) ^ 2, a }'
+    e2=$(awk -v e="$e1" -v a="$fp" -v b="$(model_frequency "$1" "$e1")" 'BEGIN { printf "%.9g", e * (a / b) ^ 2 }')
+    theta=0
+    if [ "$3" != none ]; then
+        rp=$(awk -F, 'NR > 1 { print $1, $2, $9 }' "$1/plant_decay.csv" | voltage_ratio "$2")
+        model_decay "$1" "$e2"
+        rt=$(awk -F, 'NR > 1 { print $1, $2, $9 }' "$1/twin_decay.csv" | voltage_ratio 1)
+        theta=$(awk -v t="$THETA" -v a="$rp" -v b="$rt" 'BEGIN { printf "%.9g", t * a / b }')
+    fi
+    rm -f "$1/plant_decay.csv" "$1/twin_decay.csv"
+    printf '%s %s %s' "$e2" "$fp" "$theta"
 }
 
 # ---- one plant: plant NAME SCENE T_END LOAD SEED TMP F0 A0 -----------------------
@@ -117,10 +141,15 @@ plant() {
         printf '[scene]\nbase = %s/configs/%s.ini\n' "$here" "$scene"
         [ "$load" = none ] || printf '[transducer]\nload = resistor\nresistance = %s\n' "$load"
     } > "$w/twin.ini"
-    set -- $(commission "$w" "$seed")
-    e_twin=$1
+    set -- $(commission "$w" "$seed" "$load")
+    e_twin=$1 th_twin=$3
     scale=$(awk -v e="$E" -v x="$e_twin" 'BEGIN { printf "%.6f", sqrt(x / e) }')
-    { cat "$w/twin.ini"; printf '[beam]\nyoungs_modulus = %s\n' "$e_twin"; } > "$w/twin_c.ini"
+    th_scale=$(awk -v t="$THETA" -v x="$th_twin" 'BEGIN { printf "%.6f", x / t }')
+    {
+        cat "$w/twin.ini"
+        printf '[beam]\nyoungs_modulus = %s\n' "$e_twin"
+        [ "$load" = none ] || printf '[transducer]\ncoupling = %s\n' "$th_twin"
+    } > "$w/twin_c.ini"
     # the plant, every outer step (2e-5 s): t, w(4L/7), s, power
     mkfifo "$w/fifo"
     "$REF" run "$w/plant.ini" --substeps 4 --t-end "$t_end" --out "$w/fifo" --every 1 > "$w/ref.json" &
@@ -145,7 +174,7 @@ plant() {
     # the plant's amplitude of w(4L/7): half its peak-to-peak over 0.1 s windows
     awk '{ k = int($1 * 10); if (k != last) { if (n) print (last + 0.5) / 10, (hi - lo) / 2; last = k; hi = $2; lo = $2; n = 0 }
            if ($2 > hi) hi = $2; if ($2 < lo) lo = $2; n++ }' "$w/plant.dat" > "$tmp/${name}_$seed.amp"
-    printf '%s %s %s %s %s %s\n' "$seed" "$df" "$dm" "$de" "$dc" "$scale" > "$tmp/${name}_$seed.draw"
+    printf '%s %s %s %s %s %s %s\n' "$seed" "$df" "$dm" "$de" "$dc" "$scale" "$th_scale" > "$tmp/${name}_$seed.draw"
     rm -rf "$w"
 }
 
@@ -213,6 +242,9 @@ p_comm=$(p_stats fig6 comm)
 # the commissioning's frequency scale against the plant's drawn frequency error
 x_stats=$(cat "$TMP"/*.draw | awk '{ e = $6 - (1 + $2); if (e < 0) e = -e; s += e; if (e > m) m = e; n++ }
     END { printf "%.4f %.4f %d", s / n, m, n }')
+# and its coupling scale against the drawn coupling error (the plants with a transducer)
+c_stats=$(cat "$TMP"/fig6_*.draw | awk '{ e = $7 - (1 + $5); if (e < 0) e = -e; s += e; if (e > m) m = e; n++ }
+    END { printf "%.4f %.4f %d", s / n, m, n }')
 p_table="| twin | 1 s windows within 5 % | median relative error | windows |
 |---|---|---|---|
 | open loop | $(echo "$p_open" | awk '{ print $1 " | " $2 " | " $3 }') |
@@ -222,17 +254,22 @@ p_table="| twin | 1 s windows within 5 % | median relative error | windows |
 # ---- figures: plant 1 of each scene ---------------------------------------------
 mkdir -p "$FIG"
 for name in fig6 fig8 shift; do
-    est=$TMP/${name}_1.est open=$TMP/${name}_1.open
+    est=$TMP/${name}_1.est open=$TMP/${name}_1.open comm=$TMP/${name}_1.comm
     awk -F, 'FNR > 1 && FNR % 10 == 0 { print $1, $8, $2 }' "$est" > "$TMP/s_corr.dat"
     awk -F, 'FNR > 1 && FNR % 10 == 0 { print $1, $2 }' "$open" > "$TMP/s_open.dat"
+    awk -F, 'FNR > 1 && FNR % 10 == 0 { print $1, $2 }' "$comm" > "$TMP/s_comm.dat"
     awk -F, 'FNR > 1 && FNR % 100 == 0 { print $1, $4 }' "$est" > "$TMP/a_corr.dat"
     awk -F, 'FNR > 1 && FNR % 100 == 0 { print $1, $4 }' "$open" > "$TMP/a_open.dat"
+    awk -F, 'FNR > 1 && FNR % 100 == 0 { print $1, $4 }' "$comm" > "$TMP/a_comm.dat"
     awk -F'[, ]' 'FNR == NR { w = int($1); pr[w] += $3; nr[w]++; next }
         FNR > 1 { w = int($1); pt[w] += $5; nt[w]++ }
         END { for (w in pr) if (nr[w] >= 990) printf "%d %.6e %.6e\n", w, 1e3 * pr[w] / nr[w], (nt[w] ? 1e3 * pt[w] / nt[w] : 0) }' \
         "$TMP/${name}_1.ref" "$est" | sort -g > "$TMP/p_corr.dat"
-    awk -F'[, ]' 'FNR == NR { next } FNR > 1 { w = int($1); pt[w] += $5; nt[w]++ }
-        END { for (w in pt) printf "%d %.6e\n", w, 1e3 * pt[w] / nt[w] }' "$TMP/${name}_1.ref" "$open" | sort -g > "$TMP/p_open.dat"
+    for t in open comm; do
+        awk -F'[, ]' 'FNR == NR { next } FNR > 1 { w = int($1); pt[w] += $5; nt[w]++ }
+            END { for (w in pt) printf "%d %.6e\n", w, 1e3 * pt[w] / nt[w] }' "$TMP/${name}_1.ref" "$TMP/${name}_1.$t" \
+            | sort -g > "$TMP/p_$t.dat"
+    done
     panels=2
     [ "$name" = fig6 ] && panels=3
     gnuplot <<EOF
@@ -244,15 +281,18 @@ set key right bottom
 set ylabel "s = x_C / L"
 plot "$TMP/s_corr.dat" u 1:2 w l lw 2 lc rgb "black" t "plant (reference, dt 5e-6 s)", \
      "$TMP/s_corr.dat" u 1:3 w l lw 1.2 lc rgb "#1f77b4" t "twin, corrected", \
+     "$TMP/s_comm.dat" u 1:2 w l lw 1.2 lc rgb "#2ca02c" t "twin, corrected + commissioned", \
      "$TMP/s_open.dat" u 1:2 w l lw 1.2 lc rgb "#d62728" t "twin, open loop"
 set ylabel "amplitude of w(4L/7) [mm]"
 plot "$TMP/${name}_1.amp" u 1:(\$2*1e3) w l lw 2 lc rgb "black" t "plant (half peak-to-peak, 0.1 s)", \
      "$TMP/a_corr.dat" u 1:(\$2*1e3) w l lw 1.2 lc rgb "#1f77b4" t "twin, corrected (first harmonic)", \
+     "$TMP/a_comm.dat" u 1:(\$2*1e3) w l lw 1.2 lc rgb "#2ca02c" t "twin, corrected + commissioned", \
      "$TMP/a_open.dat" u 1:(\$2*1e3) w l lw 1.2 lc rgb "#d62728" t "twin, open loop"
 if ($panels == 3) {
     set ylabel "power into R_l [mW], 1 s means"
     plot "$TMP/p_corr.dat" u 1:2 w lp lw 2 lc rgb "black" pt 7 ps 0.4 t "plant", \
          "$TMP/p_corr.dat" u 1:3 w lp lw 1.2 lc rgb "#1f77b4" pt 7 ps 0.4 t "twin, corrected", \
+         "$TMP/p_comm.dat" u 1:2 w lp lw 1.2 lc rgb "#2ca02c" pt 7 ps 0.4 t "twin, corrected + commissioned", \
          "$TMP/p_open.dat" u 1:2 w lp lw 1.2 lc rgb "#d62728" pt 7 ps 0.4 t "twin, open loop"
 }
 set xlabel "t [s]"
@@ -279,11 +319,15 @@ twin, "commissioned", first identifies the frequency scale of the plant from a
 free decay with the slider against the right clamp stop (s = 0.964; a patch
 sits at the left one): a 0.05 s burst of 2 m/s^2 at 250 Hz, then 0.55 s of
 decay, whose frequency the twin's Young's modulus is set to match (two secant
-steps on the twin's own model); it is then corrected like
-the second. The identified sqrt(E_twin / E) misses the plant's drawn 1 + d_f by
-$(echo "$x_stats" | awk '{ printf "%.4f on average, %.4f at most (%d plants)", $1, $2, $3 }').
-Friction, restitution and coupling are not identified. Statistics pooled over
-the plants after 5 s.
+steps on the twin's own model), and with a transducer the coupling from the
+ratio of the measured voltage to the measured deflection in the decay; it is
+then corrected like the second. The identified sqrt(E_twin / E) misses the
+plant's drawn 1 + d_f by
+$(echo "$x_stats" | awk '{ printf "%.4f on average, %.4f at most (%d plants)", $1, $2, $3 }'),
+the identified coupling scale its drawn 1 + d_c by
+$(echo "$c_stats" | awk '{ printf "%.4f on average, %.4f at most (%d plants)", $1, $2, $3 }').
+Friction and restitution are not identified. Statistics pooled over the plants
+after 5 s.
 
 ### Slider position
 

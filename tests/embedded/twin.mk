@@ -64,8 +64,9 @@ $(TWIN_DIR)/fig6_1mode-fig6-60s/twin_gains.h: $(TWIN_DIR)/fig6-60s.csv configs/f
 
 TWIN_COMMON_SRC := $(TWIN_SRC_DIR)/twin_main.c $(TWIN_SRC_DIR)/twin_fifo.c
 # twin_flags SCENE REAL STREAM EXTRA: the compile flags of a twin image or host build
+# (the scenes' excitation keeps its frequency: room for one response map)
 twin_flags = -fno-tree-loop-distribute-patterns -I$(EMB_CONFIG)/$1.$2.subspace -Icore/include -Icore/src -I. \
-             -I$(TWIN_SRC_DIR) -I$(TWIN_DIR)/$1-$3 -DTWIN_STREAM=\"$(TWIN_DIR)/$3.stream\" $4
+             -I$(TWIN_SRC_DIR) -I$(TWIN_DIR)/$1-$3 -DTWIN_STREAM=\"$(TWIN_DIR)/$3.stream\" -DBS_OBSERVER_MAPS=1 $4
 # $(call twin_image,NAME,TARGET,SCENE,REAL,STREAM,CLOCK,EXTRA): cm_image of the firmware
 # (CLOCK: sim or systick) on the semihosting source
 define twin__image
