@@ -39,7 +39,8 @@
  * symmetric, so both halves of the beam).
  * Response map (the s correction's, core/src/bs_observer.c 5): the scene's
  * own first-harmonic response H = Y_1 / A_1 of the signal to the base
- * acceleration at the scene's excitation, on BS_OBSERVER_TABLE points of s
+ * acceleration at one excitation (the scene's, or each of several across
+ * its schedule: observer_design.h), on BS_OBSERVER_TABLE points of s
  * over [stop_min / L, 1/2], from two PCS sweeps with continuation (docs/
  * model.md 6): up from the clamp (the stiff branch, Re H < 0) and down from
  * the centre (the soft branch, Re H > 0); map_hold periods at each point,
@@ -438,9 +439,11 @@ static int map_excitations(const scene_file *file, const bs_scene *scene, const 
         const double f = (double)gains->map_frequency[m];
         double a = (double)scene->base_accel;
         int nearest = 0;
-        for (k = 1; k < sched.points; ++k)
-            if (fabs(sched.frequency[k] - f) < fabs(sched.frequency[nearest] - f))
+        for (k = 1; k < sched.points; ++k) { /* the nearest in frequency; of equals, the strongest */
+            const double dk = fabs(sched.frequency[k] - f), dn = fabs(sched.frequency[nearest] - f);
+            if (dk < dn || (dk == dn && sched.amplitude[k] > sched.amplitude[nearest]))
                 nearest = k;
+        }
         if (sched.points > 0)
             a = sched.amplitude[nearest];
         gains->map_accel[m] = (bs_real)a;

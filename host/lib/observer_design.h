@@ -55,7 +55,8 @@ observer_design_options observer_design_defaults(double noise);
  * schedule, the fewest frequencies spaced by at most OBSERVER_MAP_SPACING
  * from its lowest to its highest (an error if more than BS_OBSERVER_MAPS
  * are needed). Each map's amplitude is that of the schedule point nearest
- * in frequency (without a schedule, the scene's). Returns 0, or -1 with a
+ * in frequency (of several, the strongest; without a schedule, the
+ * scene's). Returns 0, or -1 with a
  * message in err. */
 int observer_design(const scene_file *file, const scene_model *model, const bs_scene *scene,
                     const observer_design_options *options, bs_observer_gains *gains, char *err, size_t err_size);
