@@ -136,7 +136,8 @@ commission() { # commission DIR SEED LOAD: prints "E_twin f_plant coupling_twin 
         return
     fi
     fp=$(awk -F, 'NR > 1 { print $1, $2 }' "$1/plant_decay.csv" | decay_frequency "$2")
-    e1=$(awk -v e="$E" -v a="$fp" -v b="$(model_frequency "$1" "$E")" 'BEGIN { printf "%.9g", e * (a / b) ^ 2 }')
+    f0=$(awk -F, 'NR > 1 { print $1, $2 }' "$1/twin_decay.csv" | decay_frequency 1) # the model at E, from the check
+    e1=$(awk -v e="$E" -v a="$fp" -v b="$f0" 'BEGIN { printf "%.9g", e * (a / b) ^ 2 }')
     e2=$(awk -v e="$e1" -v a="$fp" -v b="$(model_frequency "$1" "$e1")" 'BEGIN { printf "%.9g", e * (a / b) ^ 2 }')
     theta=0
     if [ "$3" != none ]; then
