@@ -137,14 +137,15 @@ static cJSON *parse_summary(const char *const *keys)
 
 /* Runs the scene read from path for its t_end (a few steps) and prints the
  * summary into line. */
-static void run_and_summarise(const char *path)
+/* Runs the scene read into read_scene and core_scene with model and
+ * captures its JSON summary. */
+static void summarise_loaded(bs_model model)
 {
     run_options options;
     run_result result;
 
-    support_load(path, &read_scene, &core_scene, &scene_derived);
     memset(&options, 0, sizeof options);
-    options.model = (bs_model)read_scene.params.model;
+    options.model = model;
     options.s0 = read_scene.params.s0;
     options.t_end = read_scene.params.t_end;
     options.dt = read_scene.params.dt;
@@ -152,6 +153,12 @@ static void run_and_summarise(const char *path)
     options.every = 1;
     assert_int_equal(run_scene(&core_scene, &options, &result), 0);
     capture(summary_print_run(out_, &read_scene, &core_scene, NULL, &result));
+}
+
+static void run_and_summarise(const char *path)
+{
+    support_load(path, &read_scene, &core_scene, &scene_derived);
+    summarise_loaded((bs_model)read_scene.params.model);
 }
 
 /* The name comes from the file name: quote, backslash, newline, tab and a
@@ -336,8 +343,6 @@ static void test_run_summary_echoes_overrides_and_hashes(void **state)
     static scene_file renamed; /* static: large */
     char path[SCENE_PATH];
     char err[1024];
-    run_options options;
-    run_result result;
     cJSON *root, *set;
 
     (void)state;
@@ -348,15 +353,7 @@ static void test_run_summary_echoes_overrides_and_hashes(void **state)
     assert_int_equal(scene_set_assignment(&read_scene, "--set", "run.model=free", err, sizeof err), 0);
     assert_int_equal(scene_set(&read_scene, "run", "t_end", "0.001", "--t-end", err, sizeof err), 0);
     support_build(&read_scene, &core_scene, &scene_derived);
-    memset(&options, 0, sizeof options);
-    options.model = BS_MODEL_FREE;
-    options.s0 = read_scene.params.s0;
-    options.t_end = read_scene.params.t_end;
-    options.dt = read_scene.params.dt;
-    options.solver = scene_solver(&read_scene.params);
-    options.every = 1;
-    assert_int_equal(run_scene(&core_scene, &options, &result), 0);
-    capture(summary_print_run(out_, &read_scene, &core_scene, NULL, &result));
+    summarise_loaded(BS_MODEL_FREE);
     root = parse_summary(run_keys);
     set = cJSON_GetObjectItemCaseSensitive(root, "set");
     assert_int_equal(cJSON_GetArraySize(set), 3);

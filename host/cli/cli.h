@@ -24,6 +24,10 @@ int cli_map_plot(int argc, char **argv);
 /* Prints "beamslider: error: ..." to stderr. */
 void cli_error(const char *format, ...);
 
+/* An integer option value in [low, high] (low, high within int) into
+ * *value. Returns 0, or -1 after reporting "OPTION TEXT: allowed: ...". */
+int cli_parse_int(const char *option, const char *text, long low, long high, int *value);
+
 /* One output file of a command: the option that names it and its path
  * (NULL: not asked for); file is set by cli_open_outputs. */
 typedef struct cli_output {

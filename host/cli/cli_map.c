@@ -3,7 +3,6 @@
  * processes, resumable, in shards; the merged tables. */
 #define _POSIX_C_SOURCE 200809L
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -37,20 +36,6 @@ typedef struct map_cli {
     int repeat, jobs;
     int shard_index, shard_count;
 } map_cli;
-
-static int parse_count(const char *option, const char *text, int low, int high, int *out)
-{
-    char *end;
-    long value;
-    errno = 0;
-    value = strtol(text, &end, 10);
-    if (end == text || *end || errno || value < low || value > high) {
-        cli_error("%s %s: allowed: an integer in [%d, %d]", option, text, low, high);
-        return -1;
-    }
-    *out = (int)value;
-    return 0;
-}
 
 static int online_cores(void)
 {
@@ -96,9 +81,9 @@ static int parse_options(int argc, char **argv, map_cli *cli, scene_file *file)
             }
             cli->vary[cli->vary_count++] = value;
         } else if (!strcmp(option, "--repeat")) {
-            failed = parse_count(option, value, 1, MAP_MAX_REPEAT, &cli->repeat);
+            failed = cli_parse_int(option, value, 1, MAP_MAX_REPEAT, &cli->repeat);
         } else if (!strcmp(option, "--jobs")) {
-            failed = parse_count(option, value, 1, 1024, &cli->jobs);
+            failed = cli_parse_int(option, value, 1, 1024, &cli->jobs);
         } else if (!strcmp(option, "--shard")) {
             if (map_shard_parse(value, &cli->shard_index, &cli->shard_count, err, sizeof err) != 0) {
                 cli_error("%s", err);

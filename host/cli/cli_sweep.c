@@ -51,20 +51,6 @@ static int parse_real(const char *option, const char *text, double low, double h
     return 0;
 }
 
-static int parse_int(const char *option, const char *text, long low, long high, int *value)
-{
-    char *end;
-    long v;
-    errno = 0;
-    v = strtol(text, &end, 10);
-    if (end == text || *end || errno || v < low || v > high) {
-        cli_error("%s %s: allowed: an integer in [%ld, %ld]", option, text, low, high);
-        return -1;
-    }
-    *value = (int)v;
-    return 0;
-}
-
 static int parse_options(int argc, char **argv, sweep_cli *cli, sweep_options *options, scene_file *file)
 {
     char err[1024];
@@ -111,9 +97,9 @@ static int parse_options(int argc, char **argv, sweep_cli *cli, sweep_options *o
         } else if (!strcmp(option, "--step")) {
             failed = parse_real(option, value, 1e-9, 1.0, &options->step);
         } else if (!strcmp(option, "--hold")) {
-            failed = parse_int(option, value, 0, 1000000, &options->hold);
+            failed = cli_parse_int(option, value, 0, 1000000, &options->hold);
         } else if (!strcmp(option, "--record")) {
-            failed = parse_int(option, value, 1, 1000000, &options->record);
+            failed = cli_parse_int(option, value, 1, 1000000, &options->record);
         } else if (!strcmp(option, "--dir")) {
             cli->dir = !strcmp(value, "up") ? 0 : !strcmp(value, "down") ? 1 : -2;
             if (cli->dir == -2) {
@@ -127,7 +113,7 @@ static int parse_options(int argc, char **argv, sweep_cli *cli, sweep_options *o
         } else if (!strcmp(option, "--trace-at")) {
             failed = parse_real(option, value, 0.0, 1.0, &cli->trace_at);
         } else if (!strcmp(option, "--trace-periods")) {
-            failed = parse_int(option, value, 1, 1000000, &options->trace_periods);
+            failed = cli_parse_int(option, value, 1, 1000000, &options->trace_periods);
         } else {
             cli_error("unknown option '%s' (see beamslider --help)", option);
             return -1;

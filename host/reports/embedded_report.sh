@@ -75,25 +75,13 @@ profiled() {
 
 # core_sizes MAP -> "code rodata scene_rodata sim_bss scene_copy_bss" in bytes
 core_sizes() {
-    awk '
-        function hex(text,    i, value) { # "0x1a4" -> 420 (mawk has no strtonum)
-            value = 0
-            for (i = 3; i <= length(text); ++i)
-                value = value * 16 + index("0123456789abcdef", tolower(substr(text, i, 1))) - 1
-            return value
-        }
-        function add(name, size, object) {
-            if (object ~ /\/core\// && name ~ /^\.text/) code += size
-            else if (object ~ /\/core\// && name ~ /^\.rodata/) ro += size
-            else if (name == ".rodata.bs_compiled_scene") scene += size
-            else if (name == ".bss.sim") sim += size
-            else if (name == ".bss.scene_in_ram") copy += size
-        }
-        /^ \.[A-Za-z_.0-9]+$/ { pending = $1; next }
-        pending != "" && NF == 3 && $1 ~ /^0x/ { add(pending, hex($2), $3); pending = ""; next }
-        /^ \.[A-Za-z_.0-9]+ +0x/ && NF == 4 { add($1, hex($3), $4) }
-        { pending = "" }
-        END { printf "%d %d %d %d %d\n", code, ro, scene, sim, copy }' "$1"
+    awk -f host/reports/link_map_sections.awk "$1" | awk '
+        $3 ~ /\/core\// && $1 ~ /^\.text/ { code += $2; next }
+        $3 ~ /\/core\// && $1 ~ /^\.rodata/ { ro += $2; next }
+        $1 == ".rodata.bs_compiled_scene" { scene += $2; next }
+        $1 == ".bss.sim" { sim += $2; next }
+        $1 == ".bss.scene_in_ram" { copy += $2 }
+        END { printf "%d %d %d %d %d\n", code, ro, scene, sim, copy }'
 }
 
 # The steps of one phase of count.sh's output -> "NAME VALUE" lines (read them with val):

@@ -95,24 +95,12 @@ val() { awk -v name="$2" '$1 == name { sub(/^[^ ]+ /, ""); print; found = 1; exi
 # sizes MAP ELF -> "core_code twin_code scene gains": code (.text) of the core and the
 # firmware's own files, constants of the scene and the gains
 sizes() {
-    awk '
-        function hex(text,    i, value) {
-            value = 0
-            for (i = 3; i <= length(text); ++i)
-                value = value * 16 + index("0123456789abcdef", tolower(substr(text, i, 1))) - 1
-            return value
-        }
-        function add(name, size, object) {
-            if (object ~ /\/core\/src\// && name ~ /^\.text/) core += size
-            else if (object ~ /\/twin\/twin_/ && name ~ /^\.text/) twin += size
-            else if (name == ".rodata.bs_compiled_scene") scene += size
-            else if (name == ".rodata.twin_gains") gains += size
-        }
-        /^ \.[A-Za-z_.0-9]+$/ { pending = $1; next }
-        pending != "" && NF == 3 && $1 ~ /^0x/ { add(pending, hex($2), $3); pending = ""; next }
-        /^ \.[A-Za-z_.0-9]+ +0x/ && NF == 4 { add($1, hex($3), $4) }
-        { pending = "" }
-        END { printf "%d %d %d %d\n", core, twin, scene, gains }' "$1"
+    awk -f host/reports/link_map_sections.awk "$1" | awk '
+        $3 ~ /\/core\/src\// && $1 ~ /^\.text/ { core += $2; next }
+        $3 ~ /\/twin\/twin_/ && $1 ~ /^\.text/ { twin += $2; next }
+        $1 == ".rodata.bs_compiled_scene" { scene += $2; next }
+        $1 == ".rodata.twin_gains" { gains += $2 }
+        END { printf "%d %d %d %d\n", core, twin, scene, gains }'
 }
 # symbol_size ELF NAME -> bytes (0 if absent)
 symbol_size() {
