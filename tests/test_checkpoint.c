@@ -6,6 +6,7 @@
  * stop are restorable. */
 #include "support.h"
 
+#include <math.h>
 #include <string.h>
 
 static scene_file file;
@@ -220,6 +221,129 @@ static void test_state_beyond_a_clamp_stop_restores(void **state)
     assert_int_equal(bs_sim_hash(&copy), bs_sim_hash(&sim));
 }
 
+/* Offsets in a checkpoint (core/src/bs_checkpoint.c, "Layout"): the header,
+ * model and report counts (u32), step, phase, phase_step_half (u64), then the
+ * reals in order. */
+#define AT_COUNTS (6 * 4 + 4)
+#define AT_STEP (6 * 4 + 5 * 4)
+#define AT_PHASE_STEP (AT_STEP + 2 * 8)
+#define AT_REALS (AT_STEP + 3 * 8)
+enum {
+    REAL_X_PCS = 0, REAL_FREQUENCY = 1, REAL_AMPLITUDE = 2, REAL_STEP_ACCEL = 3, REAL_BASE_ACCEL = 4,
+    REAL_Q = 5, REAL_U = 5 + BS_MAX_MODES, REAL_SLIDER = 5 + 2 * BS_MAX_MODES, REAL_X_LOW = 11 + 2 * BS_MAX_MODES,
+    REAL_PERCUSSION = 12 + 2 * BS_MAX_MODES, REAL_RESIDUAL = REAL_PERCUSSION + BS_MAX_CONTACTS * BS_ROWS
+};
+
+/* buffer with real number `index` replaced by value, resealed: refused as
+ * a state this sim cannot take, and nothing changes. */
+static void expect_real_refused(int index, bs_real value, const char *what)
+{
+    unsigned char forged[sizeof buffer];
+    memcpy(forged, buffer, sizeof forged);
+    memcpy(forged + AT_REALS + (size_t)index * sizeof(bs_real), &value, sizeof value);
+    reseal(forged);
+    print_message("refused: %s\n", what);
+    expect_refused(forged, BS_CHECKPOINT_SIZE, BS_E_CHECKPOINT_SCENE);
+}
+
+static bs_real saved_real(int index)
+{
+    bs_real value;
+    memcpy(&value, buffer + AT_REALS + (size_t)index * sizeof(bs_real), sizeof value);
+    return value;
+}
+
+/* A checksum recomputed after an edit passes the damage check: what stands
+ * behind it are the setters' rules and the step's invariants, each tried
+ * here on its own. */
+static void test_edited_checkpoints_break_no_rule(void **state)
+{
+    unsigned char forged[sizeof buffer];
+    uint64_t word64;
+    uint32_t word;
+    unsigned active;
+    bs_step_report report;
+    int k, idle = -1;
+    (void)state;
+    assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    assert_int_equal(bs_sim_set_excitation(&sim, BS_R(118.0), BS_R(12.0)), BS_OK);
+    do { /* a step with a contact, so that its percussions are not all 0 */
+        assert_int_equal(bs_sim_step(&sim), BS_OK);
+        assert_int_equal(bs_sim_get_report(&sim, &report), BS_OK);
+    } while (report.active == 0 || (report.active & 0xfu) == 0xfu);
+    active = report.active;
+    assert_int_equal(bs_sim_save(&sim, buffer, BS_CHECKPOINT_SIZE), BS_OK);
+    assert_int_equal(bs_sim_init(&copy, &scene, BS_MODEL_FREE, BS_R(0.6)), BS_OK);
+
+    /* bs_sim_set_state's rules: the slider's position band */
+    expect_real_refused(REAL_SLIDER, scene.stop_min - BS_R(2.0) * scene.half_thickness, "x_C before the left stop");
+    expect_real_refused(REAL_SLIDER, scene.length, "x_C at the right clamp");
+    expect_real_refused(REAL_U + 1, (bs_real)INFINITY, "an infinite modal velocity");
+    expect_real_refused(REAL_Q + BS_MAX_MODES - 1, BS_R(1e-3), "a mode the scene does not have");
+    expect_real_refused(REAL_X_LOW, BS_R(1e-3) * saved_real(REAL_SLIDER), "x_C's remainder above its ulp");
+    /* bs_sim_set_excitation's rules and what it derives */
+    expect_real_refused(REAL_FREQUENCY, BS_R(-118.0), "a negative frequency");
+    expect_real_refused(REAL_FREQUENCY, BS_R(1.0) / scene.dt, "a frequency beyond Nyquist");
+    expect_real_refused(REAL_FREQUENCY, BS_R(119.0), "a frequency its phase step does not match");
+    expect_real_refused(REAL_AMPLITUDE, BS_R(-12.0), "a negative amplitude");
+    expect_real_refused(REAL_AMPLITUDE, BS_R(13.0), "an amplitude its step amplitude does not match");
+    expect_real_refused(REAL_STEP_ACCEL, BS_R(2.0) * saved_real(REAL_STEP_ACCEL), "a step amplitude off");
+    expect_real_refused(REAL_X_PCS, BS_R(2.0) * scene.length, "a PCS position off the beam");
+    memcpy(forged, buffer, sizeof forged); /* a super-Nyquist phase step behind a matching frequency */
+    word64 = (uint64_t)1 << 62;
+    memcpy(forged + AT_PHASE_STEP, &word64, 8);
+    reseal(forged);
+    expect_refused(forged, BS_CHECKPOINT_SIZE, BS_E_CHECKPOINT_SCENE);
+    /* the step count at its maximum: one more step would wrap it */
+    memcpy(forged, buffer, sizeof forged);
+    word64 = UINT64_MAX;
+    memcpy(forged + AT_STEP, &word64, 8);
+    reseal(forged);
+    expect_refused(forged, BS_CHECKPOINT_SIZE, BS_E_CHECKPOINT_SCENE);
+    /* the report and the percussions as the step leaves them */
+    for (k = 0; k < BS_CORNERS && idle < 0; ++k)
+        if (!(active >> k & 1u))
+            idle = k;
+    assert_true(idle >= 0);
+    expect_real_refused(REAL_PERCUSSION + BS_ROWS * idle, BS_R(1e-6), "a percussion at a contact not active");
+    expect_real_refused(REAL_RESIDUAL, BS_R(-2.0), "a negative residual");
+    memcpy(forged, buffer, sizeof forged); /* converged = 2 */
+    word = 2;
+    memcpy(forged + AT_COUNTS + 3 * 4, &word, 4);
+    reseal(forged);
+    expect_refused(forged, BS_CHECKPOINT_SIZE, BS_E_CHECKPOINT_SCENE);
+    memcpy(forged, buffer, sizeof forged); /* a seventh contact */
+    word = 1u << BS_MAX_CONTACTS;
+    memcpy(forged + AT_COUNTS, &word, 4);
+    reseal(forged);
+    expect_refused(forged, BS_CHECKPOINT_SIZE, BS_E_CHECKPOINT_SCENE);
+
+    /* and the checkpoint as saved restores */
+    assert_int_equal(bs_sim_restore(&copy, buffer, BS_CHECKPOINT_SIZE), BS_OK);
+    assert_int_equal(bs_sim_hash(&copy), bs_sim_hash(&sim));
+}
+
+/* A failed step changes nothing, its report included: a checkpoint taken
+ * after it restores. */
+static void test_failed_step_leaves_a_restorable_sim(void **state)
+{
+    bs_real u[BS_MAX_MODES] = {BS_R(0.0)};
+    bs_step_report before, after;
+    (void)state;
+    assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    run(&sim, 300);
+    assert_int_equal(bs_sim_get_report(&sim, &before), BS_OK);
+    u[0] = BS_R(1e18); /* beyond the explicit limit at the midpoint: BS_E_UNSTABLE or worse */
+    assert_int_equal(bs_sim_set_state(&sim, NULL, u, NULL, NULL), BS_OK);
+    assert_true(bs_sim_step(&sim) != BS_OK);
+    assert_int_equal(bs_sim_get_report(&sim, &after), BS_OK);
+    assert_true(after.active == before.active && after.sweeps == before.sweeps && after.systems == before.systems
+                && after.converged == before.converged);
+    assert_int_equal(bs_sim_save(&sim, buffer, BS_CHECKPOINT_SIZE), BS_OK);
+    assert_int_equal(bs_sim_init(&copy, &scene, BS_MODEL_FREE, BS_R(0.5)), BS_OK);
+    assert_int_equal(bs_sim_restore(&copy, buffer, BS_CHECKPOINT_SIZE), BS_OK);
+}
+
 static void test_scene_hash_tells_scenes_apart(void **state)
 {
     (void)state;
@@ -250,6 +374,8 @@ int main(void)
         cmocka_unit_test(test_excitation_settings_are_restored),
         cmocka_unit_test(test_bad_checkpoints_are_refused_and_change_nothing),
         cmocka_unit_test(test_state_beyond_a_clamp_stop_restores),
+        cmocka_unit_test(test_edited_checkpoints_break_no_rule),
+        cmocka_unit_test(test_failed_step_leaves_a_restorable_sim),
         cmocka_unit_test(test_scene_hash_tells_scenes_apart),
     };
     return cmocka_run_group_tests(tests, setup, NULL);

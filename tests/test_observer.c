@@ -201,6 +201,70 @@ static void test_nan_measurement_is_refused_without_change(void **state)
     assert_int_equal(bs_observer_step(&obs, &twin, BS_R(1.0), BS_R(1e-6)), BS_OK);
 }
 
+/* Sensor glitches (docs/twin.md, "Outliers"): a sample of 1e10 m in the
+ * middle of a run is skipped, counted and flagged, the twin steps on
+ * without it and stays with the plant; the same sample as the very first
+ * one, before the gate's scale knows anything, would have thrown the slider
+ * off the beam through the correction: skipped too. The flag clears after
+ * one lock-in time. Another sim than the observer's is refused. */
+static void test_outliers_are_skipped_counted_and_flagged(void **state)
+{
+    static bs_sim other;
+    bs_observer_estimate e;
+    pair_result before, after;
+    bs_real slider[3];
+    uint32_t hash;
+    (void)state;
+    load_fig6();
+    start_pair(0.3, NULL);
+    run_pair(1.0, 0.5, 1.0, &before);
+    assert_int_equal(before.last.outliers, 0);
+    assert_int_equal(bs_sim_step(&plant), BS_OK);
+    assert_int_equal(bs_observer_step(&obs, &twin, bs_sim_base_acceleration(&plant), BS_R(1e10)), BS_OK);
+    assert_int_equal(bs_observer_get(&obs, &e), BS_OK);
+    assert_int_equal(e.outliers, 1);
+    assert_int_equal(e.health, BS_OBSERVER_HEALTH_OUTLIERS);
+    assert_true((double)e.innovation > 1e9);
+    run_pair(0.05, 0.0, 1.0, &after);
+    assert_int_equal(after.last.health, BS_OBSERVER_HEALTH_OUTLIERS); /* within 0.1 s of it */
+    run_pair(0.5, 0.0, 1.0, &after);
+    print_message("a glitch of 1e10 m: s_twin - s_plant %.2g (max %.2g) over the next 0.5 s, w error %.3g m "
+                  "(%.3g before)\n", after.s_error, after.s_error_max, after.error_rms, before.error_rms);
+    assert_int_equal(after.last.outliers, 1);
+    assert_int_equal(after.last.health, 0);
+    assert_true(after.s_error_max < 0.005);
+    assert_true(after.error_rms < 2.0 * before.error_rms);
+
+    start_pair(0.3, NULL); /* the glitch first */
+    assert_int_equal(bs_sim_step(&plant), BS_OK);
+    assert_int_equal(bs_observer_step(&obs, &twin, bs_sim_base_acceleration(&plant), BS_R(1e10)), BS_OK);
+    assert_int_equal(bs_observer_get(&obs, &e), BS_OK);
+    assert_int_equal(e.outliers, 1);
+    assert_int_equal(bs_sim_get_state(&twin, NULL, NULL, slider, NULL), BS_OK);
+    assert_true(fabs((double)slider[0] / (double)scene.length - 0.3) < 1e-4);
+    run_pair(0.2, 0.1, 1.0, &after);
+    assert_int_equal(after.last.outliers, 1);
+    assert_true(after.error_rms < 3.0 * SIGNAL_NOISE);
+    {   /* a gate wide open: the state check alone stands between the
+         * correction and a slider thrown off the beam (x_C / L ~ 7e7) */
+        bs_observer_options open = bs_observer_defaults();
+        open.outlier_gate = BS_R(1e18);
+        start_pair(0.3, &open);
+        assert_int_equal(bs_sim_step(&plant), BS_OK);
+        assert_int_equal(bs_observer_step(&obs, &twin, bs_sim_base_acceleration(&plant), BS_R(1e10)), BS_OK);
+        assert_int_equal(bs_observer_get(&obs, &e), BS_OK);
+        assert_int_equal(e.outliers, 1);
+        assert_int_equal(bs_sim_get_state(&twin, NULL, NULL, slider, NULL), BS_OK);
+        assert_true(fabs((double)slider[0] / (double)scene.length - 0.3) < 1e-4);
+    }
+
+    assert_int_equal(bs_sim_init(&other, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    hash = bs_sim_hash(&other);
+    assert_int_equal(bs_observer_step(&obs, &other, BS_R(1.0), BS_R(1e-6)), BS_E_ARGUMENT);
+    assert_int_equal(bs_observer_predict(&obs, &other, BS_R(1.0)), BS_E_ARGUMENT);
+    assert_int_equal(bs_sim_hash(&other), hash);
+}
+
 /* A lost measurement (bs_observer_predict): the twin runs open loop, bit
  * for bit as bs_sim_step_measured would step it, the lock-in is not fed,
  * and the delay line moves on, so that the next measurement meets the
@@ -365,6 +429,7 @@ int main(void)
         cmocka_unit_test(test_design_gives_kalman_gains_and_a_map),
         cmocka_unit_test(test_init_refuses_what_does_not_fit),
         cmocka_unit_test(test_nan_measurement_is_refused_without_change),
+        cmocka_unit_test(test_outliers_are_skipped_counted_and_flagged),
         cmocka_unit_test(test_predict_steps_open_loop_and_keeps_the_delay_line),
         cmocka_unit_test(test_beam_correction_converges_faster_than_open_loop),
         cmocka_unit_test(test_position_tracker_recovers_a_twin_started_off),

@@ -104,11 +104,15 @@ typedef struct bs_observer_options {
                                      it; the map nearest in frequency), > 0 */
     bs_real settle_time;     /* no s correction during the first settle_time [s] (the lock-in
                                 filling), >= 0 */
+    bs_real outlier_gate;    /* a measurement whose innovation exceeds outlier_gate times the
+                                innovation's running RMS is skipped as an outlier (counted;
+                                the step goes on as without a measurement), > 1 */
 } bs_observer_options;
 
 /* Defaults (tuned on fig6, docs/twin.md): both corrections, lock-in 0.1 s,
  * gain 1 /s, rate 0.05 /s, deadband 0.004, hold above s_sigma 0.02,
- * excitation within 10 % (frequency 1 %), settle 0.5 s. */
+ * excitation within 10 % (frequency 1 %), settle 0.5 s, outliers beyond
+ * 6 times the innovation's RMS. */
 #define BS_OBSERVER_DEFAULT_LOCKIN_TIME 0.1
 #define BS_OBSERVER_DEFAULT_POSITION_GAIN 1.0
 #define BS_OBSERVER_DEFAULT_EXCITATION_TOLERANCE 0.1
@@ -116,6 +120,12 @@ typedef struct bs_observer_options {
 #define BS_OBSERVER_DEFAULT_POSITION_DEADBAND 0.004
 #define BS_OBSERVER_DEFAULT_SIGMA_HOLD 0.02
 #define BS_OBSERVER_DEFAULT_SETTLE_TIME 0.5
+#define BS_OBSERVER_DEFAULT_OUTLIER_GATE 6.0
+
+/* bs_observer_estimate.health: bits. */
+#define BS_OBSERVER_HEALTH_OUTLIERS 1 /* a measurement was skipped as an outlier within the last
+                                         lockin_time (or its correction would have broken the
+                                         sim's state: a slider off the beam, a value not finite) */
 
 /* What the observer knows after a step (bs_observer_get). */
 typedef struct bs_observer_estimate {
@@ -129,6 +139,9 @@ typedef struct bs_observer_estimate {
     bs_real measurement;    /* y_k as given */
     bs_real prediction;     /* y^_k, the twin's signal it was compared with */
     bs_real innovation;     /* e = y_k - y^_k */
+    bs_real innovation_rms; /* the running RMS of e the outlier gate compares with */
+    uint32_t outliers;      /* measurements skipped as outliers since bs_observer_init */
+    int health;             /* 0, or BS_OBSERVER_HEALTH_* bits */
 } bs_observer_estimate;
 
 /* The lock-in's two low-pass stages of one product. */
@@ -139,6 +152,7 @@ typedef struct bs_lowpass2 {
 /* PRIVATE members (core/src/bs_observer.c). */
 typedef struct bs_observer {
     uint32_t ready;
+    const bs_sim *sim;                                /* the twin it was initialised with */
     const bs_observer_gains *gains;
     bs_observer_options options;
     uint64_t steps;
@@ -151,7 +165,8 @@ typedef struct bs_observer {
     bs_lowpass2 meas_a, meas_b;                       /* <y a>, <y b> */
     bs_lowpass2 twin_a, twin_b;                       /* <y^ a>, <y^ b> */
     bs_lowpass2 defl_a, defl_b;                       /* <w a>, <w b>: the twin's w(4L/7) */
-    bs_lowpass2 innov_sq;                             /* <e^2> */
+    bs_real innovation_sq;                            /* running mean of e^2, each clipped at the gate */
+    uint64_t last_outlier;                            /* step of the last outlier (0: none) */
     bs_lowpass2 power;                                /* <p> */
     bs_lowpass2 s_error_mean, s_error_sq;             /* of the raw s error */
     bs_observer_estimate estimate;
@@ -171,12 +186,18 @@ bs_status bs_observer_init(bs_observer *obs, const bs_sim *sim, const bs_observe
                            const bs_observer_options *options);
 
 /* One step: advances sim by bs_sim_step_measured(sim, base_accel), then
- * corrects it with the measurement y_k (units of gains->signal). A
- * base_accel or measurement that is not finite is refused with
+ * corrects it with the measurement y_k (units of gains->signal). sim must
+ * be the sim the observer was initialised with. A base_accel or
+ * measurement that is not finite, or another sim, is refused with
  * BS_E_ARGUMENT and nothing changes; a failed twin step returns its status
- * (the sim keeps its last good state, the observer is unchanged). Returns
- * BS_OK, BS_E_NULL, BS_E_UNINITIALISED, BS_E_ARGUMENT or a status of
- * bs_sim_step. */
+ * (the sim keeps its last good state, the observer is unchanged).
+ * Outliers (docs/twin.md, "Outliers"): a measurement whose innovation is
+ * beyond options.outlier_gate times its running RMS, or whose correction
+ * would leave the sim in a state bs_sim_set_state refuses (the slider off
+ * the beam, a value not finite), is skipped: the step goes on as
+ * bs_observer_predict's, the estimate counts it (outliers) and flags it
+ * (health), and BS_OK is returned. Returns BS_OK, BS_E_NULL,
+ * BS_E_UNINITIALISED, BS_E_ARGUMENT or a status of bs_sim_step. */
 bs_status bs_observer_step(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_real measurement);
 
 /* One step without a measurement: the sample of y_k was lost (a FIFO
@@ -189,9 +210,10 @@ bs_status bs_observer_step(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs
  * a over time) and the twin's own products go on, and so does the s
  * correction from them. The estimate's innovation is 0 and its measurement
  * the prediction. A base_accel that is not finite is refused with
- * BS_E_ARGUMENT and nothing changes; a failed twin step returns its status
- * (nothing changes). Returns BS_OK, BS_E_NULL, BS_E_UNINITIALISED,
- * BS_E_ARGUMENT or a status of bs_sim_step. */
+ * BS_E_ARGUMENT and nothing changes, and so is another sim than the
+ * observer's; a failed twin step returns its status (nothing changes).
+ * Returns BS_OK, BS_E_NULL, BS_E_UNINITIALISED, BS_E_ARGUMENT or a status
+ * of bs_sim_step. */
 bs_status bs_observer_predict(bs_observer *obs, bs_sim *sim, bs_real base_accel);
 
 /* Copies the latest estimate into *estimate. Returns BS_OK, BS_E_NULL or

@@ -19,6 +19,7 @@
  */
 #include "beamslider.h"
 #include "bs_scene_fields.h"
+#include "bs_port.h"
 #include "bs_sim_internal.h"
 
 #define CHECKPOINT_MAGIC 0x50435342u /* "BSCP" read as a little-endian u32 */
@@ -268,27 +269,92 @@ static int finite(const bs_real *values, int count)
     return 1;
 }
 
-/* A decoded state the sim can take: the model it was initialised with, every
- * value finite, x_C in the band bs_sim_set_state accepts (the step never
- * ends outside it). */
+/* 1 if values[from .. count - 1] are all 0 (the unused modes: nothing
+ * writes them after bs_sim_init). */
+static int zero_beyond(const bs_real *values, int from, int count)
+{
+    int k;
+    for (k = from; k < count; ++k)
+        if (values[k] != BS_R(0.0))
+            return 0;
+    return 1;
+}
+
+/* The step's report: counts within what a solve can take, a residual >= 0
+ * or -1 (not measured). */
+static int acceptable_report(const saved_state *s)
+{
+    return s->counts[0] < (1u << BS_MAX_CONTACTS) && s->counts[1] <= (uint32_t)BS_SOLVER_MAX_SWEEPS
+           && s->counts[2] <= (uint32_t)BS_SOLVER_MAX_SWEEPS && s->counts[3] <= 1u && finite(&s->residual, 1)
+           && (s->residual >= BS_R(0.0) || s->residual == BS_R(-1.0));
+}
+
+/* Percussions: finite, 0 for every contact the last step did not have
+ * (the step clears them), and no tangential percussion at a clamp stop
+ * (frictionless). */
+static int acceptable_percussions(const saved_state *s)
+{
+    int k, r;
+    if (!finite(&s->percussion[0][0], BS_MAX_CONTACTS * BS_ROWS))
+        return 0;
+    for (k = 0; k < BS_MAX_CONTACTS; ++k)
+        for (r = 0; r < BS_ROWS; ++r)
+            if (s->percussion[k][r] != BS_R(0.0)
+                && (!(s->counts[0] >> k & 1u) || (r > 0 && k >= BS_CORNERS)))
+                return 0;
+    return 1;
+}
+
+#if BS_WITH_PIEZO
+/* The transducer: nothing without one; else finite voltages, a storage
+ * charged only one way, power and energy >= 0 (they may overflow to
+ * infinity in a run far beyond any harvester, and then the energy's
+ * compensation term is NaN). */
+static int acceptable_transducer(const bs_scene *scene, const bs_real *piezo)
+{
+    if (scene->load == BS_LOAD_NONE)
+        return zero_beyond(piezo, 0, 5);
+    if (!finite(piezo, 2) || !(piezo[2] >= BS_R(0.0)) || !(piezo[3] >= BS_R(0.0)))
+        return 0;
+    if (scene->load == BS_LOAD_RESISTOR ? piezo[1] != BS_R(0.0) : !(piezo[1] >= BS_R(0.0)))
+        return 0;
+    return finite(&piezo[3], 1) ? finite(&piezo[4], 1) : 1;
+}
+#endif
+
+/* A decoded state the sim can take, by the rules the setters apply
+ * (bs_sim_set_state, bs_sim_set_excitation, bs_sim_set_pcs_position) and the
+ * invariants the step keeps: the model the sim was initialised with; the
+ * beam and slider state finite, x_C in the stops band; the excitation one
+ * the setter accepts with the phase step and step amplitude it derives; a
+ * step count short of its maximum; x_C's compensation term below its half
+ * ulp; the report, percussions and transducer as a step leaves them.
+ * The shape caches are not checked: they are derived (an expansion about
+ * x = L has its centre a rounding above L, an extreme scene's coefficients
+ * may overflow), any value of theirs can only make a step fail with a
+ * status, and the checksum vouches for them. */
 static int acceptable(const bs_sim *sim, const saved_state *s)
 {
-    if (s->model != (uint32_t)sim->model || s->counts[0] >= (1u << BS_MAX_CONTACTS))
+    const bs_scene *scene = sim->scene;
+    const int n = scene->n_modes;
+    if (s->model != (uint32_t)sim->model || s->step == UINT64_MAX || !acceptable_report(s)
+        || !acceptable_percussions(s))
         return 0;
-    if (!finite(&s->x_pcs, 1) || !finite(s->excitation, 2) || !finite(&s->step_accel, 1)
-        || !finite(&s->base_accel, 1) || !finite(s->q_beam, BS_MAX_MODES) || !finite(s->u_beam, BS_MAX_MODES)
-        || !finite(s->slider, 3) || !finite(s->slider_velocity, 3) || !finite(&s->x_c_low, 1)
-        || !finite(&s->percussion[0][0], BS_MAX_CONTACTS * BS_ROWS))
+    if (!finite(s->q_beam, BS_MAX_MODES) || !finite(s->u_beam, BS_MAX_MODES) || !zero_beyond(s->q_beam, n, BS_MAX_MODES)
+        || !zero_beyond(s->u_beam, n, BS_MAX_MODES)
+        || !bs_state_acceptable(sim, s->q_beam, s->u_beam, s->slider, s->slider_velocity))
         return 0;
-    /* the shape caches are not checked: they are what the step computed from
-     * the scene (an expansion about x = L has its centre a rounding above L,
-     * an extreme scene's coefficients may overflow), the checksum vouches for
-     * them, and no value of theirs can break the sim's invariants */
+    if (!finite(&s->x_c_low, 1) || !(bs_fabs(s->x_c_low) <= BS_REAL_EPS * bs_fabs(s->slider[0])))
+        return 0;
+    if (!finite(&s->x_pcs, 1) || !(s->x_pcs >= BS_R(0.0) && s->x_pcs <= scene->length) || !finite(&s->base_accel, 1)
+        || !finite(s->excitation, 2) || !finite(&s->step_accel, 1)
+        || !bs_excitation_acceptable(sim, s->excitation[0], s->excitation[1], s->phase_step_half, s->step_accel))
+        return 0;
 #if BS_WITH_PIEZO
-    if (!finite(s->piezo, 2)) /* the voltages, which the step keeps finite; power and energy may overflow */
-        return 0;
+    return acceptable_transducer(scene, s->piezo);
+#else
+    return 1;
 #endif
-    return sim->model != BS_MODEL_FREE || bs_within_stops(sim->scene, s->slider[0]);
 }
 
 bs_status bs_sim_restore(bs_sim *sim, const void *buffer, size_t size)

@@ -62,6 +62,16 @@
  *    buried in noise, or a branch where |H| hardly changes with s, makes
  *    it large; a measured |H_m| the branch never reaches, or an excitation
  *    the map was not made for, makes it 1.
+ * 7. Outliers. A sensor glitch must neither end the twin nor throw it off
+ *    the beam. The innovation's scale is a running mean of e^2 over the
+ *    last few hundred samples (memory GATE_MEMORY per sample), floored at
+ *    the design's sigma_n^2; a measurement with |e| beyond outlier_gate
+ *    times its root is skipped, and so is one whose correction (3) would
+ *    leave a state bs_sim_set_state refuses. A skipped sample enters the
+ *    scale at the gate's own level, so that a lasting change of the
+ *    signal (a branch jump) widens the gate by ~7 % a sample (with the
+ *    default gate of 6) and is followed within a millisecond, while one
+ *    glitch widens it by that once.
  * A step without a measurement (bs_observer_predict: a sample lost on the
  * way, e.g. a firmware's FIFO overrun) does all but what needs y: no beam
  * correction (3), and of the lock-in (4) only the reference and the twin's
@@ -81,6 +91,8 @@
 /* Steps between two updates of s (the lock-in moves over ~tau = 5000 steps;
  * the map search is the dearest part of a step). */
 #define POSITION_EVERY 16
+/* Weight of the newest sample in the running mean of e^2 (7). */
+#define GATE_MEMORY BS_R(0.00390625) /* 1/256 */
 
 typedef struct complex_real {
     bs_real re, im;
@@ -98,6 +110,7 @@ bs_observer_options bs_observer_defaults(void)
     o.sigma_hold = (bs_real)BS_OBSERVER_DEFAULT_SIGMA_HOLD;
     o.excitation_tolerance = (bs_real)BS_OBSERVER_DEFAULT_EXCITATION_TOLERANCE;
     o.settle_time = (bs_real)BS_OBSERVER_DEFAULT_SETTLE_TIME;
+    o.outlier_gate = (bs_real)BS_OBSERVER_DEFAULT_OUTLIER_GATE;
     return o;
 }
 
@@ -114,7 +127,8 @@ static int valid_options(const bs_observer_options *o)
            && finite(o->position_deadband) && o->position_deadband >= BS_R(0.0)
            && finite(o->sigma_hold) && o->sigma_hold > BS_R(0.0) && finite(o->excitation_tolerance)
            && o->excitation_tolerance > BS_R(0.0) && finite(o->settle_time)
-           && o->settle_time >= BS_R(0.0);
+           && o->settle_time >= BS_R(0.0) && finite(o->outlier_gate) && o->outlier_gate > BS_R(1.0)
+           && finite(o->outlier_gate * o->outlier_gate);
 }
 
 /* The maps: s ascending within (0, 1/2], everything finite (|H| < 0: no
@@ -159,8 +173,9 @@ static int valid_schedule(const bs_observer_gains *g, int n)
 
 static int valid_gains(const bs_observer_gains *g, const bs_scene *scene)
 {
+    /* sigma_n^2 floors the outlier gate's scale (7): it must not underflow */
     if (g->n_modes != scene->n_modes || g->latency < 0 || g->latency > BS_OBSERVER_MAX_LATENCY
-        || !finite(g->noise) || !(g->noise > BS_R(0.0)))
+        || !finite(g->noise * g->noise) || !(g->noise * g->noise >= BS_REAL_EPS * BS_REAL_EPS * BS_REAL_EPS))
         return 0;
     if (g->signal == BS_SIGNAL_VOLTAGE) {
 #if BS_WITH_PIEZO
@@ -216,6 +231,7 @@ bs_status bs_observer_init(bs_observer *obs, const bs_sim *sim, const bs_observe
     if (sim->model != BS_MODEL_FREE || !valid_gains(gains, sim->scene) || !valid_options(options))
         return BS_E_ARGUMENT;
 
+    obs->sim = sim;
     obs->gains = gains;
     /* member by member: a struct assignment may become a call of memcpy,
      * which the freestanding core does not have */
@@ -228,6 +244,7 @@ bs_status bs_observer_init(bs_observer *obs, const bs_sim *sim, const bs_observe
     obs->options.sigma_hold = options->sigma_hold;
     obs->options.excitation_tolerance = options->excitation_tolerance;
     obs->options.settle_time = options->settle_time;
+    obs->options.outlier_gate = options->outlier_gate;
     obs->steps = 0;
     obs->head = 0;
     for (i = 0; i <= BS_OBSERVER_MAX_LATENCY; ++i) {
@@ -240,7 +257,9 @@ bs_status bs_observer_init(bs_observer *obs, const bs_sim *sim, const bs_observe
     obs->ref_aa = obs->ref_bb = obs->ref_b = zero;
     obs->meas_a = obs->meas_b = obs->twin_a = obs->twin_b = zero;
     obs->defl_a = obs->defl_b = zero;
-    obs->innov_sq = obs->power = obs->s_error_mean = obs->s_error_sq = zero;
+    obs->power = obs->s_error_mean = obs->s_error_sq = zero;
+    obs->innovation_sq = BS_R(0.0);
+    obs->last_outlier = 0;
     obs->estimate.s = bs_sim_position(sim);
     obs->estimate.s_sigma = SIGMA_UNKNOWN;
     obs->estimate.s_error = BS_R(0.0);
@@ -251,19 +270,9 @@ bs_status bs_observer_init(bs_observer *obs, const bs_sim *sim, const bs_observe
     obs->estimate.measurement = BS_R(0.0);
     obs->estimate.prediction = obs->past_signal[0];
     obs->estimate.innovation = BS_R(0.0);
+    obs->estimate.outliers = 0;
     obs->ready = OBSERVER_READY;
     return BS_OK;
-}
-
-/* x_C += dx as the compensated pair (x_C, x_c_low) with TwoSum, so that
- * sub-ulp moves are kept (docs/model.md 9.2). */
-static void add_position(bs_sim *sim, bs_real dx)
-{
-    const bs_real b = dx + sim->x_c_low;
-    const bs_real sum = sim->slider[0] + b;
-    const bs_real b_virtual = sum - sim->slider[0];
-    sim->x_c_low = (sim->slider[0] - (sum - b_virtual)) + (b - b_virtual);
-    sim->slider[0] = sum;
 }
 
 /* The gains at s: linear between the schedule's points, held beyond its ends. */
@@ -286,6 +295,24 @@ static void gains_at(const bs_observer_gains *g, bs_real s, int n, bs_real *gain
     *gain_v = g->gain_v[i] + t * (g->gain_v[i + 1] - g->gain_v[i]);
 }
 
+/* The sim's state as the correction changes it (3). */
+typedef struct corrected_state {
+    bs_real q[BS_MAX_MODES], u[BS_MAX_MODES];
+    bs_real slider[3], velocity[3], x_low;
+    bs_real voltage;
+} corrected_state;
+
+/* x_C += dx as the compensated pair (x_C, x_low) with TwoSum, so that
+ * sub-ulp moves are kept (docs/model.md 9.2). */
+static void add_compensated(bs_real *x, bs_real *x_low, bs_real dx)
+{
+    const bs_real b = dx + *x_low;
+    const bs_real sum = *x + b;
+    const bs_real b_virtual = sum - *x;
+    *x_low = (*x - (sum - b_virtual)) + (b - b_virtual);
+    *x = sum;
+}
+
 /* 3: output injection on the beam (and the patch voltage), the slider
  * carried along as if attached: the gains are those of the beam with the
  * slider rigidly attached, and moving the beam under a slider that stays
@@ -293,8 +320,8 @@ static void gains_at(const bs_observer_gains *g, bs_real s, int n, bs_real *gain
  * dw = phi^T dq and tilts by dw' = phi'^T dq; the slider follows:
  * z_r += dw, beta -= dw' (beta is clockwise), x_C += d dw' (its centre of
  * mass, d below the slot centre, swings with the tilt); likewise the
- * velocities with du. */
-static void correct_beam(bs_sim *sim, const bs_observer_gains *g, bs_real e)
+ * velocities with du. Into c; the sim is not changed. */
+static void correction_of(const bs_sim *sim, const bs_observer_gains *g, bs_real e, corrected_state *c)
 {
     const bs_scene *scene = sim->scene;
     const int n = BS_NMODES(scene);
@@ -307,27 +334,69 @@ static void correct_beam(bs_sim *sim, const bs_observer_gains *g, bs_real e)
     bs_shape_eval(scene, x, phi, slope);
     for (k = 0; k < n; ++k) {
         const bs_real dq = gain_q[k] * e, du = gain_u[k] * e;
-        sim->q_beam[k] += dq;
-        sim->u_beam[k] += du;
+        c->q[k] = sim->q_beam[k] + dq;
+        c->u[k] = sim->u_beam[k] + du;
         dw += phi[k] * dq;
         dw_slope += slope[k] * dq;
         dv += phi[k] * du;
         dv_slope += slope[k] * du;
     }
-    sim->slider[1] += dw;
-    sim->slider_velocity[1] += dv;
+    for (k = 0; k < 3; ++k) {
+        c->slider[k] = sim->slider[k];
+        c->velocity[k] = sim->slider_velocity[k];
+    }
+    c->x_low = sim->x_c_low;
+    c->slider[1] += dw;
+    c->velocity[1] += dv;
 #if BS_WITH_ROTATION
-    sim->slider[2] -= dw_slope;
-    sim->slider_velocity[2] -= dv_slope;
+    c->slider[2] -= dw_slope;
+    c->velocity[2] -= dv_slope;
 #endif
-    add_position(sim, scene->com_offset * dw_slope);
-    sim->slider_velocity[0] += scene->com_offset * dv_slope;
+    add_compensated(&c->slider[0], &c->x_low, scene->com_offset * dw_slope);
+    c->velocity[0] += scene->com_offset * dv_slope;
+    c->voltage = BS_R(0.0);
 #if BS_WITH_PIEZO
     if (scene->load != BS_LOAD_NONE)
-        sim->voltage += gain_v * e;
+        c->voltage = sim->voltage + gain_v * e;
 #else
     (void)gain_v;
 #endif
+}
+
+/* c into the sim if it is a state bs_sim_set_state accepts (and the voltage
+ * finite); returns 1, or 0 and leaves the sim as it was. */
+static int commit_correction(bs_sim *sim, const corrected_state *c)
+{
+    int k;
+    if (!bs_state_acceptable(sim, c->q, c->u, c->slider, c->velocity) || !finite(c->voltage))
+        return 0;
+    for (k = 0; k < BS_NMODES(sim->scene); ++k) {
+        sim->q_beam[k] = c->q[k];
+        sim->u_beam[k] = c->u[k];
+    }
+    for (k = 0; k < 3; ++k) {
+        sim->slider[k] = c->slider[k];
+        sim->slider_velocity[k] = c->velocity[k];
+    }
+    sim->x_c_low = c->x_low;
+#if BS_WITH_PIEZO
+    if (sim->scene->load != BS_LOAD_NONE)
+        sim->voltage = c->voltage;
+#endif
+    return 1;
+}
+
+/* 7: 1 if e is beyond the gate; the running mean of e^2 takes e^2, or the
+ * gate's level for a skipped one. */
+static int beyond_gate(bs_observer *obs, bs_real e)
+{
+    const bs_real noise_sq = obs->gains->noise * obs->gains->noise;
+    const bs_real scale_sq = obs->innovation_sq > noise_sq ? obs->innovation_sq : noise_sq;
+    const bs_real limit_sq = obs->options.outlier_gate * obs->options.outlier_gate * scale_sq;
+    const bs_real e_sq = e * e;
+    const int beyond = !(e_sq <= limit_sq); /* e^2 may overflow: infinity is beyond */
+    obs->innovation_sq += GATE_MEMORY * ((beyond ? limit_sq : e_sq) - obs->innovation_sq);
+    return beyond;
 }
 
 static void lowpass2(bs_lowpass2 *f, bs_real x, bs_real alpha)
@@ -345,7 +414,7 @@ static bs_real mean(const bs_lowpass2 *f)
  * measurement (measured 0) the products with y hold; the reference, an
  * integral over time, and the twin's own products go on. */
 static void demodulate(bs_observer *obs, bs_real dt, bs_real a, bs_real y, bs_real y_twin, bs_real w_twin,
-                       bs_real e, bs_real power, int measured)
+                       bs_real power, int measured)
 {
     const bs_real tau = obs->options.lockin_time;
     const bs_real alpha = dt / tau;
@@ -359,7 +428,6 @@ static void demodulate(bs_observer *obs, bs_real dt, bs_real a, bs_real y, bs_re
     if (measured) {
         lowpass2(&obs->meas_a, y * a, alpha);
         lowpass2(&obs->meas_b, y * b, alpha);
-        lowpass2(&obs->innov_sq, e * e, alpha);
     }
     lowpass2(&obs->twin_a, y_twin * a, alpha);
     lowpass2(&obs->twin_b, y_twin * b, alpha);
@@ -518,7 +586,7 @@ static void move_slider(bs_sim *sim, bs_real ds)
         target = scene->stop_min;
     if (target > scene->stop_max)
         target = scene->stop_max;
-    add_position(sim, target - x);
+    add_compensated(&sim->slider[0], &sim->x_c_low, target - x);
 }
 
 /* Moves x_C by the correction over interval [s] (the time since the last). */
@@ -550,6 +618,7 @@ static void correct_position(bs_observer *obs, bs_sim *sim, bs_real interval)
  * injection and the lock-in's products with y). */
 static bs_status observe(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_real measurement, int measured)
 {
+    const int given = measured;
     const bs_observer_gains *g;
     bs_status status;
     bs_real dt, e;
@@ -562,7 +631,7 @@ static bs_status observe(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_r
     status = bs_sim_status(sim);
     if (status != BS_OK)
         return status;
-    if (!finite(base_accel) || !finite(measurement))
+    if (sim != obs->sim || !finite(base_accel) || !finite(measurement))
         return BS_E_ARGUMENT; /* refused: nothing changes */
     status = bs_sim_step_measured(sim, base_accel);
     if (status != BS_OK)
@@ -579,16 +648,27 @@ static bs_status observe(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_r
     if (aligned < 0)
         aligned += BS_OBSERVER_MAX_LATENCY + 1;
 
-    if (!measured)
-        measurement = obs->past_signal[aligned]; /* as if it had been predicted exactly */
-    e = measurement - obs->past_signal[aligned];
-    obs->estimate.measurement = measurement;
+    e = measured ? measurement - obs->past_signal[aligned] : BS_R(0.0);
+    if (measured) { /* an outlier is skipped (7): the step goes on without it */
+        corrected_state corrected;
+        int outlier = beyond_gate(obs, e);
+        if (!outlier && obs->options.correct_beam) {
+            correction_of(sim, g, e, &corrected);
+            outlier = !commit_correction(sim, &corrected);
+        }
+        if (outlier) {
+            obs->estimate.outliers += obs->estimate.outliers < UINT32_MAX;
+            obs->last_outlier = obs->steps;
+            measured = 0;
+        }
+    }
+    obs->estimate.measurement = given ? measurement : obs->past_signal[aligned];
     obs->estimate.prediction = obs->past_signal[aligned];
     obs->estimate.innovation = e;
-    if (measured && obs->options.correct_beam)
-        correct_beam(sim, g, e);
+    if (!measured)
+        measurement = obs->past_signal[aligned]; /* as if it had been predicted exactly */
     demodulate(obs, dt, obs->past_accel[aligned], measurement, obs->past_signal[aligned],
-               obs->past_deflection[aligned], e, twin_power(sim), measured);
+               obs->past_deflection[aligned], twin_power(sim), measured);
     if (obs->steps % POSITION_EVERY == 0) {
         estimate_position(obs, sim, dt);
         correct_position(obs, sim, dt * (bs_real)POSITION_EVERY);
@@ -624,5 +704,14 @@ bs_status bs_observer_get(const bs_observer *obs, bs_observer_estimate *estimate
     estimate->measurement = obs->estimate.measurement;
     estimate->prediction = obs->estimate.prediction;
     estimate->innovation = obs->estimate.innovation;
+    {
+        const bs_real noise_sq = obs->gains->noise * obs->gains->noise;
+        const bs_real held = obs->options.lockin_time / obs->sim->scene->dt; /* steps the flag stays */
+        estimate->innovation_rms = bs_sqrt(obs->innovation_sq > noise_sq ? obs->innovation_sq : noise_sq);
+        estimate->outliers = obs->estimate.outliers;
+        estimate->health = obs->last_outlier > 0 && (bs_real)(obs->steps - obs->last_outlier) < held
+                               ? BS_OBSERVER_HEALTH_OUTLIERS
+                               : 0;
+    }
     return BS_OK;
 }

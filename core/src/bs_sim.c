@@ -21,6 +21,12 @@ static void clear_percussions(bs_sim *sim)
             sim->percussion[k][r] = BS_R(0.0);
 }
 
+/* a sinc(Omega dt / 2): the amplitude of the step mean (core/src/bs_excitation.c). */
+static bs_real step_amplitude(bs_real amplitude, uint64_t phase_step_half)
+{
+    return (bs_real)((double)amplitude * bs_excitation_step_factor(phase_step_half));
+}
+
 bs_solver_options bs_solver_defaults(void)
 {
     bs_solver_options options;
@@ -70,7 +76,7 @@ bs_status bs_sim_init_(uint32_t tag, size_t sim_size, size_t scene_size, bs_sim 
     sim->phase_step_half = scene->phase_step_half;
     sim->excitation[0] = scene->frequency;
     sim->excitation[1] = scene->base_accel;
-    sim->step_accel = (bs_real)((double)scene->base_accel * bs_excitation_step_factor(scene->phase_step_half));
+    sim->step_accel = step_amplitude(scene->base_accel, scene->phase_step_half);
     sim->base_accel = BS_R(0.0);
     for (i = 0; i < BS_MAX_MODES; ++i) {
         sim->q_beam[i] = BS_R(0.0);
@@ -139,8 +145,22 @@ bs_status bs_sim_set_excitation(bs_sim *sim, bs_real frequency, bs_real amplitud
     sim->phase_step_half = half;
     sim->excitation[0] = frequency;
     sim->excitation[1] = amplitude;
-    sim->step_accel = (bs_real)((double)amplitude * bs_excitation_step_factor(half));
+    sim->step_accel = step_amplitude(amplitude, half);
     return BS_OK;
+}
+
+int bs_excitation_acceptable(const bs_sim *sim, bs_real frequency, bs_real amplitude, uint64_t phase_step_half,
+                             bs_real step_accel)
+{
+    const bs_scene *scene = sim->scene;
+    const int scenes_own = frequency == scene->frequency && phase_step_half == scene->phase_step_half;
+    if (!(amplitude >= BS_R(0.0)) || amplitude - amplitude != BS_R(0.0))
+        return 0;
+    if (!scenes_own
+        && (phase_step_half == 0
+            || phase_step_half != bs_excitation_phase_step_half((double)frequency, (double)scene->dt)))
+        return 0;
+    return step_accel == step_amplitude(amplitude, phase_step_half);
 }
 
 bs_status bs_sim_get_excitation(const bs_sim *sim, bs_real *frequency, bs_real *amplitude)
@@ -268,6 +288,15 @@ static int all_finite(const bs_real *values, int count)
     return 1;
 }
 
+int bs_state_acceptable(const bs_sim *sim, const bs_real *q_beam, const bs_real *u_beam, const bs_real *slider,
+                        const bs_real *slider_velocity)
+{
+    if (!all_finite(q_beam, sim->scene->n_modes) || !all_finite(u_beam, sim->scene->n_modes)
+        || !all_finite(slider, 3) || !all_finite(slider_velocity, 3))
+        return 0;
+    return !slider || sim->model != BS_MODEL_FREE || bs_within_stops(sim->scene, slider[0]);
+}
+
 bs_status bs_sim_set_state(bs_sim *sim, const bs_real *q_beam, const bs_real *u_beam,
                            const bs_real *slider, const bs_real *slider_velocity)
 {
@@ -275,10 +304,7 @@ bs_status bs_sim_set_state(bs_sim *sim, const bs_real *q_beam, const bs_real *u_
     const bs_status status = bs_sim_status(sim);
     if (status != BS_OK)
         return status;
-    if (!all_finite(q_beam, sim->scene->n_modes) || !all_finite(u_beam, sim->scene->n_modes)
-        || !all_finite(slider, 3) || !all_finite(slider_velocity, 3))
-        return BS_E_ARGUMENT;
-    if (slider && sim->model == BS_MODEL_FREE && !bs_within_stops(sim->scene, slider[0]))
+    if (!bs_state_acceptable(sim, q_beam, u_beam, slider, slider_velocity))
         return BS_E_ARGUMENT;
     for (k = 0; k < sim->scene->n_modes; ++k) {
         if (q_beam)

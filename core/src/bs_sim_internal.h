@@ -55,4 +55,18 @@ static inline int bs_within_stops(const bs_scene *scene, bs_real x)
     return x >= scene->stop_min - scene->half_thickness && x <= scene->stop_max + scene->half_thickness;
 }
 
+/* The rules a state must meet to be a sim's, shared by the setters and
+ * bs_sim_restore (core/src/bs_sim.c): */
+
+/* bs_sim_set_state's: q, u, slider pose and velocity finite (NULL: not
+ * given), x_C within the stops band in the free model. */
+int bs_state_acceptable(const bs_sim *sim, const bs_real *q_beam, const bs_real *u_beam, const bs_real *slider,
+                        const bs_real *slider_velocity);
+
+/* bs_sim_set_excitation's: a frequency and amplitude it accepts, with the
+ * phase step and step amplitude it derives from them (or, for the scene's
+ * own frequency, the scene's phase step, which bs_sim_init takes as it is). */
+int bs_excitation_acceptable(const bs_sim *sim, bs_real frequency, bs_real amplitude, uint64_t phase_step_half,
+                             bs_real step_accel);
+
 #endif

@@ -147,7 +147,7 @@ static bs_status find_contacts(bs_sim *sim, step_state *s)
 
 /* 3b: the contact problem, warm-started from the last step's percussions;
  * adds M^-1 W P to the free velocities. */
-static void solve_contacts(bs_sim *sim, step_state *s)
+static void solve_contacts(bs_sim *sim, step_state *s, bs_step_report *report)
 {
     const bs_scene *scene = sim->scene;
     bs_contact_set *set = &sim->contacts;
@@ -158,7 +158,7 @@ static void solve_contacts(bs_sim *sim, step_state *s)
         for (r = 0; r < BS_ROWS; ++r)
             set->percussion[BS_ROWS * a + r] = sim->percussion[set->id[a]][r];
     bs_contact_delassus(scene, set);
-    bs_pgs_solve(set, &sim->solver, &sim->report);
+    bs_pgs_solve(set, &sim->solver, report);
     bs_contact_apply(scene, set, s->u_beam, s->u_slider);
 }
 
@@ -202,7 +202,7 @@ static bs_status end_of_step(const bs_sim *sim, step_state *s)
 }
 
 /* The step's result becomes the sim's state. */
-static void commit(bs_sim *sim, const step_state *s)
+static void commit(bs_sim *sim, const step_state *s, const bs_step_report *report)
 {
     const int n = BS_NMODES(sim->scene);
     unsigned active = 0;
@@ -227,7 +227,11 @@ static void commit(bs_sim *sim, const step_state *s)
         for (r = 0; r < BS_ROWS; ++r)
             sim->percussion[id][r] = sim->contacts.percussion[BS_ROWS * a + r];
     }
-    sim->report.active = active;
+    sim->report.active = active; /* member by member: no memcpy in the core */
+    sim->report.sweeps = report->sweeps;
+    sim->report.systems = report->systems;
+    sim->report.residual = report->residual;
+    sim->report.converged = report->converged;
     sim->base_accel = s->base_accel;
 #if BS_WITH_PIEZO
     if (sim->scene->load != BS_LOAD_NONE) {
@@ -245,6 +249,7 @@ static void commit(bs_sim *sim, const step_state *s)
 static bs_status step(bs_sim *sim, bs_real base_accel)
 {
     step_state s;
+    bs_step_report report;
     bs_status status;
 
     s.base_accel = base_accel;
@@ -254,16 +259,18 @@ static bs_status step(bs_sim *sim, bs_real base_accel)
     status = find_contacts(sim, &s);
     if (status != BS_OK)
         return status;
-    sim->report.sweeps = 0;
-    sim->report.systems = 0;
-    sim->report.residual = BS_R(0.0);
-    sim->report.converged = 1;
+    /* the report too is committed only with the step: a failed step leaves
+     * the sim as it was */
+    report.sweeps = 0;
+    report.systems = 0;
+    report.residual = BS_R(0.0);
+    report.converged = 1;
     if (sim->contacts.count > 0)
-        solve_contacts(sim, &s);
+        solve_contacts(sim, &s, &report);
     status = end_of_step(sim, &s);
     if (status != BS_OK)
         return status;
-    commit(sim, &s);
+    commit(sim, &s, &report);
     return BS_OK;
 }
 
