@@ -36,6 +36,9 @@
 #define BS_WITH_PCS 0
 #define BS_WITH_IMPLICIT 0
 #define BS_WITH_PIEZO 0
+/* entries of S and gamma that are not 0: bit N i + j of S_ij, bit k of gamma_k */
+#define BS_SCENE_STRETCH_USED UINT64_C(0x1555555)
+#define BS_SCENE_GAMMA_USED UINT64_C(0x15)
 #endif
 #endif
 

@@ -17,18 +17,24 @@
 #include "bs_types.h"
 
 /* Scratch of one step's contact problem; lives in bs_sim, not on the stack.
- * Each contact has BS_ROWS rows: normal (0) and, with friction, tangential (1). */
+ * Each contact has BS_ROWS rows: normal (0) and, with friction, tangential (1).
+ * The beam part of a corner's force direction is a combination of the mode
+ * shapes and slopes at the corner, W_r,k = beam_coef[a][r][0] phi_k +
+ * beam_coef[a][r][1] phi'_k (core/src/bs_contact.c): phi and phi' are kept,
+ * not the rows, and every product with them is formed in one pass. */
 typedef struct bs_contact_set {
     int count;                                   /* active contacts */
     int id[BS_MAX_CONTACTS];                     /* contact index 0..5 of each active contact */
-    bs_real dir_beam[BS_ROWS * BS_MAX_CONTACTS][BS_MAX_MODES];    /* W column of row BS_ROWS a + r, modal part */
-    bs_real dir_slider[BS_ROWS * BS_MAX_CONTACTS][BS_SLIDER_DOF]; /* W column, slider part */
-    bs_real delassus[BS_ROWS * BS_MAX_CONTACTS][BS_ROWS * BS_MAX_CONTACTS]; /* G = W^T M^-1 W */
     bs_real free_velocity[BS_ROWS * BS_MAX_CONTACTS];  /* c: xi = G P + c */
+    bs_real percussion[BS_ROWS * BS_MAX_CONTACTS];     /* P [N s] */
 #if BS_WITH_FRICTION
     bs_real mu[BS_MAX_CONTACTS];                 /* friction coefficient (0 at the stops) */
 #endif
-    bs_real percussion[BS_ROWS * BS_MAX_CONTACTS];     /* P [N s] */
+    bs_real beam_coef[BS_MAX_CONTACTS][BS_ROWS][2]; /* W_r,k = coef[0] phi_k + coef[1] phi'_k (0 at a stop) */
+    bs_real dir_slider[BS_ROWS * BS_MAX_CONTACTS][BS_SLIDER_DOF]; /* W column, slider part */
+    bs_real phi[BS_MAX_CONTACTS][BS_MAX_MODES];  /* phi_k at active corner a (unused at a stop) */
+    bs_real slope[BS_MAX_CONTACTS][BS_MAX_MODES]; /* phi'_k there [1/(m sqrt(kg))] */
+    bs_real delassus[BS_ROWS * BS_MAX_CONTACTS][BS_ROWS * BS_MAX_CONTACTS]; /* G = W^T M^-1 W */
 #if BS_WITH_SUBSPACE
     bs_real system[BS_ROWS * BS_MAX_CONTACTS][BS_ROWS * BS_MAX_CONTACTS + 1]; /* active-set [A | b], 3+ contacts */
 #endif
@@ -45,6 +51,36 @@ typedef struct bs_shape_cache {
     bs_real centre;                    /* x of the expansion [m]; below 0: empty */
     bs_real coef[BS_MAX_MODES][BS_SHAPE_TERMS]; /* phi_k = sum_m coef[k][m] t^m, t in the pieces' local units */
 } bs_shape_cache;
+
+/* What every step reads, prepared once from the scene (core/src/bs_prepare.c)
+ * into the sim's own memory, so that a firmware's step reads RAM even with
+ * the scene in flash: pre-multiplied by dt where that saves work per step,
+ * the contact laws settable at run time. */
+typedef struct bs_step_constants {
+    bs_real dt, half_dt;
+    bs_real dt_gamma[BS_MAX_MODES];     /* dt gamma_k */
+    bs_real dt_omega_sq[BS_MAX_MODES];  /* dt omega_k^2 (explicit step) */
+    bs_real dt_damping[BS_MAX_MODES];   /* dt 2 D omega_k (explicit step) */
+    bs_real phi_sensor[BS_MAX_MODES];   /* phi_k(4/7) */
+#if BS_WITH_IMPLICIT
+    bs_real mode_gain[BS_MAX_MODES];    /* the scene's when implicit, else 1: the beam part of M^-1 */
+#endif
+#if BS_WITH_STRETCHING
+    bs_real stretch[BS_MAX_MODES][BS_MAX_MODES]; /* sqrt(dt) S, so that E = q^T (sqrt(dt) S) q and
+                                                    dt N(q) = E (sqrt(dt) S q) */
+    bs_real stretch_rows[BS_MAX_MODES]; /* sum_j |S_ij| (sqrt(dt) S), the exact stability bound */
+    bs_real stretch_limit;              /* a step with 0 <= E below this is within the stability
+                                           limit (core/src/bs_beam.c); -1: no such shortcut */
+#endif
+    bs_real stiffness_limit;            /* 4 / dt^2 [1/s^2], less the open patch's stiffness */
+    bs_real corner[BS_CORNERS][2];      /* r_CP,i */
+    bs_real half_thickness, length, stop_min, stop_max;
+    bs_real shape_scale, slope_scale;   /* shape_scale and 2 shape_scale: dphi/dx = slope_scale dphi/dt */
+    bs_real mass_inv, inertia_inv;
+    bs_real dt_gravity[2];              /* dt g (x, z) */
+    bs_real mu, e_n;                    /* the contact laws (bs_sim_set_contact_laws) */
+    bs_real compliance[2];              /* 1 + eps of the normal and tangential rows (bs_contact.h) */
+} bs_step_constants;
 
 typedef struct bs_sim {
     uint32_t ready;                    /* BS_SIM_READY after a successful bs_sim_init, else not */
@@ -65,10 +101,6 @@ typedef struct bs_sim {
     bs_real x_c_low;                   /* compensated-sum remainder of x_C (docs/model.md 9.2) */
     bs_real percussion[BS_MAX_CONTACTS][BS_ROWS]; /* last step's percussions, warm start */
     bs_step_report report;
-    bs_contact_set contacts;
-    bs_shape_cache side[2];            /* mode shapes about the left (P1, P2) and right (P4, P3) corners */
-    bs_real shape_reach;               /* how far they serve (core/src/bs_shape.c) */
-    bs_real stretch_rows[BS_MAX_MODES]; /* sum_j |S_ij|, for the stability bound (core/src/bs_beam.c) */
 #if BS_WITH_PIEZO
     bs_real voltage;                   /* v across the patch [V] */
     bs_real storage_voltage;           /* V_s (rectifier) [V] */
@@ -76,6 +108,12 @@ typedef struct bs_sim {
     bs_real energy, energy_low;        /* into the load since init [J], a compensated sum */
     bs_real piezo_stiffness;           /* max_k |theta_k| sum_j |theta_j| / C_p (stability bound) */
 #endif
+    /* what each step reads is near the start: the offsets a step uses stay
+     * short (a Cortex-M's VLDR reaches 1020 bytes) */
+    bs_step_constants k;               /* the scene as the step reads it (bs_prepare) */
+    bs_real shape_reach;               /* how far the expansions serve (core/src/bs_shape.c) */
+    bs_shape_cache side[2];            /* mode shapes about the left (P1, P2) and right (P4, P3) corners */
+    bs_contact_set contacts;
 } bs_sim;
 
 #endif

@@ -59,8 +59,9 @@ typedef struct bs_solver_options {
     bs_real tol_rel;         /* converged when residual <= tol_rel * scale + tol_abs; >= 0, finite */
     bs_real tol_abs;         /* [N s], >= 0, finite */
     int measure_residual;    /* 1: every report carries the natural-map residual of the result;
-                                0: only where the solve needs it anyway (two or more contacts);
-                                a single contact, solved exactly, then reports -1 */
+                                0: only where the solve needs it anyway (a pair whose laws the
+                                signs do not settle, three or more contacts); a single contact,
+                                solved exactly, and a pair whose laws hold by sign then report -1 */
 } bs_solver_options;
 
 /* Largest max_sweeps bs_sim_set_solver accepts. */
@@ -80,7 +81,8 @@ typedef struct bs_step_report {
                                 three or more were solved from the warm start's modes) */
     int systems;             /* linear systems of the active-set method solved (two or more contacts) */
     bs_real residual;        /* natural-map residual of the returned percussions [N s];
-                                -1 when not measured (measure_residual = 0, one contact) */
+                                -1 when not measured (measure_residual = 0 and the solve did not
+                                need it: one contact, or two whose laws hold by sign) */
     int converged;           /* 1: residual <= tol_rel * scale + tol_abs (or no contact; or, not
                                 measured, the single contact's exact solve held); 0: not */
 } bs_step_report;

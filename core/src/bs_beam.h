@@ -1,20 +1,46 @@
-/* bs_beam.h - smooth modal forces of the beam. */
+/* bs_beam.h - the beam's cubic stiffening and the explicit stability limit. */
 #ifndef BS_BEAM_H
 #define BS_BEAM_H
 
-#include "bs_scene.h"
+#include "bs_inline.h"
+#include "bs_sim_layout.h"
 
-/* force[k] = h_k of docs/model.md 5 per unit modal mass for base acceleration
- * base_accel: the cubic term at q, the linear stiffness at q_stiff (q itself
- * for the explicit step; docs/design.md 4), damping at u. Returns an upper
- * bound [1/s^2] of the largest eigenvalue of the explicitly integrated
- * stiffness: dN/dq, plus diag(omega_k^2) when linear_explicit (stretch_rows:
- * bs_beam_stretch_rows). */
-bs_real bs_beam_force(const bs_scene *scene, const bs_real *stretch_rows, const bs_real *q, const bs_real *q_stiff,
-                      const bs_real *u, bs_real base_accel, int linear_explicit, bs_real *force);
+/* Whether S_ij and gamma_k can be other than 0: with a compiled scene of up
+ * to 8 modes its masks (`beamslider gen`, bs_scene_check holds a scene to
+ * them), so that the unrolled loops drop the zeros; else always. */
+#ifdef BS_SCENE_STRETCH_USED
+#define BS_STRETCH_USED(i, j) ((BS_SCENE_STRETCH_USED >> (BS_SCENE_MODES * (i) + (j))) & 1u)
+#define BS_GAMMA_USED(i) ((BS_SCENE_GAMMA_USED >> (i)) & 1u)
+#else
+#define BS_STRETCH_USED(i, j) 1
+#define BS_GAMMA_USED(i) 1
+#endif
 
-/* rows[i] = sum_j |S_ij| (0 past the scene's modes), the constant part of the
- * stability bound above; once per run. */
-void bs_beam_stretch_rows(const bs_scene *scene, bs_real *rows);
+#if BS_WITH_STRETCHING
+/* sq = S' q and returns E' = q^T S' q (S' = sqrt(dt) S, bs_step_constants):
+ * dt N(q) = E' sq. Inlined: the step's loops are unrolled for a compiled
+ * scene, and its zeros dropped. */
+BS_INLINE bs_real bs_beam_stretch(const bs_step_constants *k, int n, const bs_real *q, bs_real *sq)
+{
+    bs_real energy = BS_R(0.0);
+    int i, j;
+    for (i = 0; i < n; ++i) {
+        bs_real acc = BS_R(0.0);
+        for (j = 0; j < n; ++j)
+            if (BS_STRETCH_USED(i, j))
+                acc += k->stretch[i][j] * q[j];
+        sq[i] = acc;
+        energy += q[i] * acc;
+    }
+    return energy;
+}
+#endif
+
+/* 1 if the explicitly integrated stiffness is within the limit omega dt < 2:
+ * omega_sq_dt the dt omega_k^2 integrated explicitly (NULL: none, the
+ * implicit step), sq and energy from bs_beam_stretch, extra a further
+ * stiffness [1/s^2] (the open patch's). */
+int bs_beam_stable(const bs_step_constants *k, int n, const bs_real *omega_sq_dt, const bs_real *sq, bs_real energy,
+                   bs_real extra);
 
 #endif

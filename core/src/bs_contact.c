@@ -1,9 +1,10 @@
-/* bs_contact.c - contact kinematics of the four slot corners and the clamp stops.
+/* bs_contact.c - contact kinematics of the four slot corners and the clamp
+ * stops, and the contact problem they pose.
  *
  * Slot corner i (P1..P4, counter-clockwise from top left), zeta_i = +1 for the
  * top corners P1, P4 (they touch the beam's top surface), -1 for P2, P3:
  *
- *   r_P   = (x_C, z_r) + A(beta) rho_i,   rho_i = r_CP,i (scene->corner)
+ *   r_P   = (x_C, z_r) + A(beta) rho_i,   rho_i = r_CP,i (the scene's corner)
  *   A rho = ( cos b rho_x + sin b rho_z, -sin b rho_x + cos b rho_z )
  *   w, w' = sum phi_k q_k, sum phi_k' q_k at x_P;   alpha = atan w'
  *   r_B   = (x_P, w) + zeta h/2 (-w', 1)
@@ -20,6 +21,16 @@
  *   so with a1 = zeta h/2 (w'^2 - 1), a2 = -zeta h/2 w':
  *           W_N,k = -n_z phi_k + (-n_x a1 - n_z a2 + g_T) phi_k'
  *           W_T,k = -t_z phi_k + (-t_x a1 - t_z a2 - g_N) phi_k'
+ * Each row's beam part is a combination of two vectors, phi and phi' at the
+ * corner: the set keeps those and the two coefficients per row, never the
+ * rows, and forms every product with them in one pass over the modes:
+ *   W_r^T u         = c_r0 (phi . u) + c_r1 (phi' . u)
+ *   W_r^T M^-1 W_s  = c_r0 c_s0 (phi_a . phi_b) + c_r0 c_s1 (phi_a . phi'_b)
+ *                   + c_r1 c_s0 (phi'_a . phi_b) + c_r1 c_s1 (phi'_a . phi'_b) + slider part
+ *   M^-1 W P        = sum_a (c_N0 P_N + c_T0 P_T) phi_a + (c_N1 P_N + c_T1 P_T) phi'_a
+ * (with the implicit step's modal masses 1 / mode_gain_k in the dot products
+ * of M^-1). cos alpha = 1 / sqrt(1 + w'^2) is a binomial series for the
+ * slopes that occur, exact to rounding there, and the formula beyond.
  * Heights are relative to the base (z_r = z_C - w0, docs/model.md 10): the
  * base's motion enters the slider's equation as an inertial force instead,
  * and the contact velocity has no base term (w~ = 0).
@@ -51,147 +62,176 @@
  * that; without it the solve stalls above its tolerance).
  */
 #include "bs_contact.h"
+#include "bs_inline.h"
 #include "bs_port.h"
 #include "bs_shape.h"
+
+/* The beam part of M^-1: the implicit step's mode gains (prepared as 1 for
+ * an explicit scene); a build without the implicit step multiplies by
+ * nothing. */
+#if BS_WITH_IMPLICIT
+#define MODE_GAIN(k, i) ((k)->mode_gain[i])
+#else
+#define MODE_GAIN(k, i) ((void)(k), BS_R(1.0))
+#endif
+
+/* cos alpha = (1 + w'^2)^(-1/2). For x = w'^2 < 1/400 (slopes below 0.05, all
+ * but the wildest steps) the binomial series 1 - x/2 + 3x^2/8 - 5x^3/16 + ...,
+ * alternating with falling terms, stops below half an ulp: in float after
+ * x^2 (next term 5/16 x^3 < 5e-9), in double after x^5 (231/1024 x^6 < 6e-17).
+ * A square root and a division saved per corner in contact. */
+BS_INLINE bs_real cos_of_slope(bs_real w_slope)
+{
+    const bs_real x = w_slope * w_slope;
+    if (x < BS_R(0.0025)) {
+#if BS_REAL_FLOAT
+        return BS_R(1.0) - x * (BS_R(0.5) - x * BS_R(0.375));
+#else
+        return BS_R(1.0) - x * (BS_R(0.5) - x * (BS_R(0.375) - x * (BS_R(0.3125)
+               - x * (BS_R(0.2734375) - x * BS_R(0.24609375)))));
+#endif
+    }
+    return BS_R(1.0) / bs_sqrt(BS_R(1.0) + x);
+}
 
 /* A slot corner at the midpoint and the beam under it. */
 typedef struct corner_point {
     bs_real arm_x, arm_z;          /* A rho */
-    bs_real x, z;                  /* r_P */
+    bs_real z;                     /* z_P */
     bs_real t;                     /* local offset from its side's expansion */
-    bs_real w, w_slope;            /* w and w' at x (0 inside a clamp) */
-    int on_beam;                   /* x within [0, L] */
+    bs_real w, w_slope;            /* w and w' at x_P (0 inside a clamp) */
+    int on_beam;                   /* x_P within [0, L] */
 } corner_point;
 
-static bs_real corner_zeta(int corner)
+/* Appends corner (its point p, zeta its side of the beam) to the active
+ * set: its phi and phi', the coefficients of its rows' beam parts and their
+ * slider parts. d_z = z_P - w - zeta h/2, already found in contact. */
+BS_INLINE void add_corner(const bs_scene *scene, const bs_step_constants *k, const bs_shape_cache *cache, int corner,
+                       bs_real zeta, bs_real d_z, const corner_point *p, bs_contact_set *set)
 {
-    return (corner == 0 || corner == 3) ? BS_R(1.0) : BS_R(-1.0);
-}
-
-static void locate_corner(const bs_scene *scene, const bs_contact_frame *frame, int corner,
-                          bs_real cos_beta, bs_real sin_beta, corner_point *p)
-{
-    const bs_real *rho = scene->corner[corner];
-    p->arm_x = cos_beta * rho[0] + sin_beta * rho[1];
-    p->arm_z = -sin_beta * rho[0] + cos_beta * rho[1];
-    p->x = frame->x_kinematic + p->arm_x;
-    p->z = frame->z + p->arm_z;
-    p->on_beam = p->x >= BS_R(0.0) && p->x <= scene->length;
-}
-
-/* w and w' at corner p from its side's sums s_m (0 inside a clamp, which
- * moves with the base). */
-static void deflection_at(const bs_real *sum, bs_real slope_scale, corner_point *p)
-{
-    bs_real w, dw;
-    bs_shape_taylor(sum, p->t, &w, &dw);
-    p->w = p->on_beam ? w : BS_R(0.0);
-    p->w_slope = p->on_beam ? slope_scale * dw : BS_R(0.0);
-}
-
-/* The beam under the two corners of one side from the side's expansion,
- * expanded anew at their midpoint when either is out of its reach. */
-static void beam_under_side(const bs_scene *scene, const bs_real *q, bs_real reach, bs_shape_cache *cache,
-                            corner_point *top, corner_point *bottom)
-{
-    bs_real sum[BS_SHAPE_TERMS];
-    int k, m;
-
-    top->t = bs_shape_offset(scene, cache, top->x);
-    bottom->t = bs_shape_offset(scene, cache, bottom->x);
-    if (!(bs_fabs(top->t) <= reach && bs_fabs(bottom->t) <= reach)) {
-        bs_shape_expand(scene, BS_R(0.5) * (top->x + bottom->x), cache);
-        top->t = bs_shape_offset(scene, cache, top->x);
-        bottom->t = bs_shape_offset(scene, cache, bottom->x);
-    }
-    for (m = 0; m < BS_SHAPE_TERMS; ++m)
-        sum[m] = BS_R(0.0);
-    for (k = 0; k < BS_NMODES(scene); ++k)
-        for (m = 0; m < BS_SHAPE_TERMS; ++m)
-            sum[m] += q[k] * cache->coef[k][m];
-    deflection_at(sum, BS_R(2.0) * scene->shape_scale, top);
-    deflection_at(sum, BS_R(2.0) * scene->shape_scale, bottom);
-}
-
-/* Appends the evaluated corner to the active set if g_N < 0. Returns 1 if
- * the corner is on the wrong side of the beam's axis (zeta d_z < -h/2: more
- * than h/2 into the beam, which no step of a held contact reaches; the slider
- * has left the beam), else 0. */
-static int add_corner(const bs_scene *scene, const bs_contact_frame *frame, int corner,
-                      const corner_point *p, bs_contact_set *set)
-{
-    const int n = BS_NMODES(scene);
-    const bs_real zeta = corner_zeta(corner);
-    const bs_real hh = scene->half_thickness;
+    const bs_real hh = k->half_thickness;
     const bs_real w_slope = p->w_slope;
-    bs_real phi[BS_MAX_MODES], slope[BS_MAX_MODES];
-    bs_real cos_alpha, sin_alpha, n_x, n_z, d_x, d_z, gap_n, a1, a2, coef_nn, coef_ns;
-    int a;
-    int k;
+    const bs_real d_x = zeta * hh * w_slope;
+    const bs_real cos_alpha = cos_of_slope(w_slope);
+    const bs_real sin_alpha = w_slope * cos_alpha;
+    const bs_real n_x = -zeta * sin_alpha, n_z = zeta * cos_alpha;
+    const bs_real gap_n = n_x * d_x + n_z * d_z;
+    const bs_real a1 = zeta * hh * (w_slope * w_slope - BS_R(1.0));
+    const bs_real a2 = -zeta * hh * w_slope;
+    bs_real coef_ns = -n_x * a1 - n_z * a2; /* factor of phi_k' in W_N, + g_T below */
+    bs_real *normal;
+    const int a = set->count++;
 
-    d_x = zeta * hh * w_slope;
-    d_z = p->z - p->w - zeta * hh;
-    if (!(zeta * d_z - hh * w_slope * w_slope < BS_R(0.0)))
-        return 0;
-    if (zeta * d_z + hh < BS_R(0.0))
-        return 1;
-    bs_shape_expanded(scene, &frame->cache[corner == 0 || corner == 1 ? 0 : 1], p->t, p->on_beam, phi, slope);
-    cos_alpha = BS_R(1.0) / bs_sqrt(BS_R(1.0) + w_slope * w_slope);
-    sin_alpha = w_slope * cos_alpha;
-    n_x = -zeta * sin_alpha;
-    n_z = zeta * cos_alpha;
-    gap_n = n_x * d_x + n_z * d_z;
-
-    a = set->count++;
     set->id[a] = corner;
-    a1 = zeta * hh * (w_slope * w_slope - BS_R(1.0));
-    a2 = -zeta * hh * w_slope;
-    coef_nn = -n_z;                               /* factor of phi_k in W_N */
-    coef_ns = -n_x * a1 - n_z * a2;               /* factor of phi_k' in W_N, + g_T below */
-    set->dir_slider[BS_ROWS * a][0] = n_x;
-    set->dir_slider[BS_ROWS * a][1] = n_z;
+    bs_shape_expanded(scene, cache, p->t, p->on_beam, k->slope_scale, set->phi[a], set->slope[a]);
+    normal = set->dir_slider[BS_ROWS * a];
+    normal[0] = n_x;
+    normal[1] = n_z;
 #if BS_WITH_ROTATION
-    set->dir_slider[BS_ROWS * a][2] = n_x * p->arm_z - n_z * p->arm_x;
+    normal[2] = n_x * p->arm_z - n_z * p->arm_x;
 #endif
 #if BS_WITH_FRICTION
     {
-        const bs_real t_x = -zeta * cos_alpha;
-        const bs_real t_z = -zeta * sin_alpha;
-        const bs_real gap_t = t_x * d_x + t_z * d_z;
-        const bs_real coef_tn = -t_z;
-        const bs_real coef_ts = -t_x * a1 - t_z * a2 - gap_n;
-        coef_ns += gap_t;
-        set->mu[a] = scene->mu;
-        for (k = 0; k < n; ++k)
-            set->dir_beam[BS_ROWS * a + 1][k] = coef_tn * phi[k] + coef_ts * slope[k];
-        set->dir_slider[BS_ROWS * a + 1][0] = t_x;
-        set->dir_slider[BS_ROWS * a + 1][1] = t_z;
+        const bs_real t_x = -zeta * cos_alpha, t_z = -zeta * sin_alpha;
+        bs_real *tangent = set->dir_slider[BS_ROWS * a + 1];
+        coef_ns += t_x * d_x + t_z * d_z;
+        set->mu[a] = k->mu;
+        set->beam_coef[a][1][0] = -t_z;
+        set->beam_coef[a][1][1] = -t_x * a1 - t_z * a2 - gap_n;
+        tangent[0] = t_x;
+        tangent[1] = t_z;
 #if BS_WITH_ROTATION
-        set->dir_slider[BS_ROWS * a + 1][2] = t_x * p->arm_z - t_z * p->arm_x;
+        tangent[2] = t_x * p->arm_z - t_z * p->arm_x;
 #endif
     }
 #else
     (void)gap_n; /* the tangential row is what needs it */
 #endif
-    for (k = 0; k < n; ++k)
-        set->dir_beam[BS_ROWS * a][k] = coef_nn * phi[k] + coef_ns * slope[k];
+    set->beam_coef[a][0][0] = -n_z;
+    set->beam_coef[a][0][1] = coef_ns;
+}
+
+/* The slot corner rho at the slider pose: its arm A rho, height, offset in
+ * the side's expansion (t) and whether it is over the beam. */
+BS_INLINE void locate_corner(const bs_step_constants *k, const bs_contact_frame *frame, const bs_real *rho,
+                          bs_real cos_beta, bs_real sin_beta, bs_real centre, corner_point *p)
+{
+    bs_real x;
+    p->arm_x = cos_beta * rho[0] + sin_beta * rho[1];
+    p->arm_z = -sin_beta * rho[0] + cos_beta * rho[1];
+    x = frame->x_kinematic + p->arm_x;
+    p->z = frame->z + p->arm_z;
+    p->t = k->slope_scale * (x - centre);
+    p->on_beam = x >= BS_R(0.0) && x <= k->length;
+}
+
+/* One side of the slot: its top corner (P1 or P4, zeta = +1) and bottom
+ * corner (P2 or P3, zeta = -1) over the beam, from the side's expansion of
+ * the mode shapes (expanded anew at their midpoint when either is beyond
+ * its reach), each added to the set if g_N < 0. Returns 1 if a corner is on
+ * the wrong side of the beam's axis (zeta d_z < -h/2: more than h/2 into
+ * the beam, which no step of a held contact reaches; the slider has left
+ * the beam), else 0. */
+BS_INLINE int side_of_slot(const bs_scene *scene, const bs_step_constants *k, const bs_contact_frame *frame,
+                        bs_shape_cache *cache, int top_id, int bottom_id, bs_real cos_beta, bs_real sin_beta,
+                        bs_contact_set *set)
+{
+    const bs_real hh = k->half_thickness;
+    bs_real sum[BS_SHAPE_TERMS];
+    corner_point top, bottom;
+    bs_real w, dw, d_top, d_bottom;
+    int i, m;
+
+    locate_corner(k, frame, k->corner[top_id], cos_beta, sin_beta, cache->centre, &top);
+    locate_corner(k, frame, k->corner[bottom_id], cos_beta, sin_beta, cache->centre, &bottom);
+    if (!(bs_fabs(top.t) <= frame->reach && bs_fabs(bottom.t) <= frame->reach)) {
+        const bs_real x_top = frame->x_kinematic + top.arm_x, x_bottom = frame->x_kinematic + bottom.arm_x;
+        bs_shape_expand(scene, BS_R(0.5) * (x_top + x_bottom), cache);
+        top.t = k->slope_scale * (x_top - cache->centre);
+        bottom.t = k->slope_scale * (x_bottom - cache->centre);
+    }
+    /* w = sum_m s_m t^m with s_m = sum_k q_k b[k][m]: the modes summed once
+     * for both corners (0 inside a clamp, which moves with the base) */
+    for (m = 0; m < BS_SHAPE_TERMS; ++m)
+        sum[m] = BS_R(0.0);
+    for (i = 0; i < BS_NMODES(scene); ++i)
+        for (m = 0; m < BS_SHAPE_TERMS; ++m)
+            sum[m] += frame->q_beam[i] * cache->coef[i][m];
+    bs_shape_taylor(sum, top.t, &w, &dw);
+    top.w = top.on_beam ? w : BS_R(0.0);
+    top.w_slope = top.on_beam ? k->slope_scale * dw : BS_R(0.0);
+    bs_shape_taylor(sum, bottom.t, &w, &dw);
+    bottom.w = bottom.on_beam ? w : BS_R(0.0);
+    bottom.w_slope = bottom.on_beam ? k->slope_scale * dw : BS_R(0.0);
+    /* g_N < 0 as zeta d_z - h/2 w'^2 < 0 (cos alpha > 0 needs no root) */
+    d_top = top.z - top.w - hh;
+    d_bottom = bottom.z - bottom.w + hh;
+    if (d_top - hh * top.w_slope * top.w_slope < BS_R(0.0)) {
+        if (d_top + hh < BS_R(0.0))
+            return 1;
+        add_corner(scene, k, cache, top_id, BS_R(1.0), d_top, &top, set);
+    }
+    if (-d_bottom - hh * bottom.w_slope * bottom.w_slope < BS_R(0.0)) {
+        if (-d_bottom + hh < BS_R(0.0))
+            return 1;
+        add_corner(scene, k, cache, bottom_id, BS_R(-1.0), d_bottom, &bottom, set);
+    }
     return 0;
 }
 
-static void add_stop(const bs_scene *scene, int id, bs_real sign, bs_contact_set *set)
+static void add_stop(int id, bs_real sign, bs_contact_set *set)
 {
     const int a = set->count++;
-    int r, k;
+    int r, c;
 
     set->id[a] = id;
 #if BS_WITH_FRICTION
     set->mu[a] = BS_R(0.0);
 #endif
     for (r = 0; r < BS_ROWS; ++r) {
-        for (k = 0; k < BS_NMODES(scene); ++k)
-            set->dir_beam[BS_ROWS * a + r][k] = BS_R(0.0);
-        for (k = 0; k < BS_SLIDER_DOF; ++k)
-            set->dir_slider[BS_ROWS * a + r][k] = BS_R(0.0);
+        set->beam_coef[a][r][0] = set->beam_coef[a][r][1] = BS_R(0.0);
+        for (c = 0; c < BS_SLIDER_DOF; ++c)
+            set->dir_slider[BS_ROWS * a + r][c] = BS_R(0.0);
     }
     set->dir_slider[BS_ROWS * a][0] = sign;
 }
@@ -201,7 +241,7 @@ static void add_stop(const bs_scene *scene, int id, bs_real sign, bs_contact_set
  * (R - h) / B ~ 0.005 rad; for |beta| < 0.05 the Taylor polynomials below
  * are exact to rounding in double (first omitted terms beta^9/9! = 5e-18 and
  * beta^10/10! = 3e-20) and save two library calls per step. */
-static void rotation(bs_real beta, bs_real *cos_beta, bs_real *sin_beta)
+BS_INLINE void rotation(bs_real beta, bs_real *cos_beta, bs_real *sin_beta)
 {
     const bs_real b2 = beta * beta;
     if (b2 < BS_R(0.0025)) { /* multiplications by 1/6, 1/20, ...: no division */
@@ -217,125 +257,287 @@ static void rotation(bs_real beta, bs_real *cos_beta, bs_real *sin_beta)
 }
 #endif
 
-bs_status bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame, bs_contact_set *set)
+bs_status bs_contact_detect(const bs_scene *scene, const bs_step_constants *k, const bs_contact_frame *frame,
+                            bs_contact_set *set)
 {
     bs_real cos_beta = BS_R(1.0), sin_beta = BS_R(0.0);
-    corner_point at[BS_CORNERS];
-    int corner;
 
 #if BS_WITH_ROTATION
     rotation(frame->beta, &cos_beta, &sin_beta);
 #endif
-    set->count = 0;
-    for (corner = 0; corner < BS_CORNERS; ++corner)
-        locate_corner(scene, frame, corner, cos_beta, sin_beta, &at[corner]);
-    beam_under_side(scene, frame->q_beam, frame->reach, &frame->cache[0], &at[0], &at[1]); /* P1, P2 */
-    beam_under_side(scene, frame->q_beam, frame->reach, &frame->cache[1], &at[3], &at[2]); /* P4, P3 */
-    for (corner = 0; corner < BS_CORNERS; ++corner)
-        if (add_corner(scene, frame, corner, &at[corner], set))
-            return BS_E_ESCAPED;
+    set->count = 0; /* in the order found: P1, P2, P4, P3, the stops */
+    if (side_of_slot(scene, k, frame, &frame->cache[0], 0, 1, cos_beta, sin_beta, set)
+        || side_of_slot(scene, k, frame, &frame->cache[1], 3, 2, cos_beta, sin_beta, set))
+        return BS_E_ESCAPED;
     if (frame->stops) {
-        if (frame->x_stops < scene->stop_min)
-            add_stop(scene, BS_STOP_LEFT, BS_R(1.0), set);
-        if (frame->x_stops > scene->stop_max)
-            add_stop(scene, BS_STOP_RIGHT, BS_R(-1.0), set);
+        if (frame->x_stops < k->stop_min)
+            add_stop(BS_STOP_LEFT, BS_R(1.0), set);
+        if (frame->x_stops > k->stop_max)
+            add_stop(BS_STOP_RIGHT, BS_R(-1.0), set);
     }
     return BS_OK;
 }
 
-/* W_r^T u of active contact a, row r. */
-static bs_real row_velocity(const bs_scene *scene, const bs_contact_set *set, int a, int r,
-                            const bs_real *u_beam, const bs_real *u_slider)
+/* The products of two corners' shape vectors a and b over the modes:
+ * dot[0] = phi_a . M^-1 phi_b, [1] phi_a . M^-1 phi'_b, [2] phi'_a . M^-1
+ * phi_b, [3] phi'_a . M^-1 phi'_b (M^-1: the mode gains, 1 when explicit). */
+BS_INLINE void cross_products(const bs_scene *scene, const bs_step_constants *k, const bs_contact_set *set, int a,
+                           int b, bs_real *dot)
 {
-    const bs_real *beam = set->dir_beam[BS_ROWS * a + r];
+    const bs_real *phi_a = set->phi[a], *slope_a = set->slope[a], *phi_b = set->phi[b], *slope_b = set->slope[b];
+    bs_real pp = BS_R(0.0), ps = BS_R(0.0), sp = BS_R(0.0), ss = BS_R(0.0);
+    int i;
+    for (i = 0; i < BS_NMODES(scene); ++i) {
+        const bs_real gp = MODE_GAIN(k, i) * phi_a[i], gs = MODE_GAIN(k, i) * slope_a[i];
+        pp += gp * phi_b[i];
+        ps += gp * slope_b[i];
+        sp += gs * phi_b[i];
+        ss += gs * slope_b[i];
+    }
+    dot[0] = pp;
+    dot[1] = ps;
+    dot[2] = sp;
+    dot[3] = ss;
+}
+
+/* W_r^T M^-1 W_s of a row with beam coefficients x and slider part sx and a
+ * row with y and sy: the beam part from the shape products dot
+ * (cross_products; NULL when either is a stop) and the slider part. */
+BS_INLINE bs_real delassus_entry(const bs_step_constants *k, const bs_real *x, const bs_real *sx, const bs_real *y,
+                              const bs_real *sy, const bs_real *dot)
+{
+    bs_real g = k->mass_inv * (sx[0] * sy[0] + sx[1] * sy[1]);
+#if BS_WITH_ROTATION
+    g += k->inertia_inv * sx[2] * sy[2];
+#endif
+    if (dot)
+        g += x[0] * (y[0] * dot[0] + y[1] * dot[1]) + x[1] * (y[0] * dot[2] + y[1] * dot[3]);
+    return g;
+}
+
+/* The rows of G of contact a against contact b (b <= a; dot: their shape
+ * products or NULL), with the compliance on the diagonal. */
+BS_INLINE void delassus_block(const bs_step_constants *k, bs_contact_set *set, int a, int b, const bs_real *dot)
+{
+    bs_real (*g)[BS_ROWS * BS_MAX_CONTACTS] = set->delassus;
+    const int ra = BS_ROWS * a, rb = BS_ROWS * b;
+    const bs_real *na = set->beam_coef[a][0], *nb = set->beam_coef[b][0];
+    const bs_real *sna = set->dir_slider[ra], *snb = set->dir_slider[rb];
+    bs_real nn = delassus_entry(k, na, sna, nb, snb, dot);
+#if BS_WITH_FRICTION
+    const bs_real *ta = set->beam_coef[a][1], *tb = set->beam_coef[b][1];
+    const bs_real *sta = set->dir_slider[ra + 1], *stb = set->dir_slider[rb + 1];
+    bs_real nt = delassus_entry(k, na, sna, tb, stb, dot), tt = delassus_entry(k, ta, sta, tb, stb, dot);
+    if (a == b) {
+        tt *= k->compliance[1];
+    } else {
+        const bs_real tn = delassus_entry(k, ta, sta, nb, snb, dot);
+        g[ra + 1][rb] = g[rb][ra + 1] = tn;
+    }
+    g[ra][rb + 1] = g[rb + 1][ra] = nt;
+    g[ra + 1][rb + 1] = g[rb + 1][ra + 1] = tt;
+#endif
+    if (a == b)
+        nn *= k->compliance[0];
+    g[ra][rb] = g[rb][ra] = nn;
+}
+
+/* W_r^T u of row r of contact a: the beam part from phi . u and phi' . u. */
+BS_INLINE bs_real row_velocity(const bs_contact_set *set, int a, int r, bs_real phi_u, bs_real slope_u,
+                            const bs_real *u_slider)
+{
+    const bs_real *c = set->beam_coef[a][r];
     const bs_real *slider = set->dir_slider[BS_ROWS * a + r];
-    bs_real v = slider[0] * u_slider[0];
-    int k;
-    v += slider[1] * u_slider[1];
+    bs_real v = c[0] * phi_u + c[1] * slope_u + slider[0] * u_slider[0] + slider[1] * u_slider[1];
 #if BS_WITH_ROTATION
     v += slider[2] * u_slider[2];
 #endif
-    for (k = 0; k < BS_NMODES(scene); ++k)
-        v += beam[k] * u_beam[k];
     return v;
 }
 
-void bs_contact_free_velocity(const bs_scene *scene, bs_contact_set *set,
-                              const bs_real *u_beam, const bs_real *u_slider,
-                              const bs_real *u_beam_before, const bs_real *u_slider_before)
-{
-    int a, r;
+/* Products of one corner's shape vectors with the velocities: [0] phi . u,
+ * [1] phi' . u at the free velocities, [2] and [3] at those before the step. */
+typedef struct shape_velocities {
+    bs_real at[4];
+} shape_velocities;
 
-#if !BS_WITH_RESTITUTION
-    (void)u_beam_before;
+/* c of contact a from its shape products with the velocities. */
+BS_INLINE void free_velocity(const bs_step_constants *k, bs_contact_set *set, int a, const shape_velocities *v,
+                          const bs_real *u_slider, const bs_real *u_slider_before)
+{
+    bs_real c_n = row_velocity(set, a, 0, v->at[0], v->at[1], u_slider);
+#if BS_WITH_RESTITUTION
+    c_n += k->e_n * row_velocity(set, a, 0, v->at[2], v->at[3], u_slider_before);
+#else
+    (void)k;
     (void)u_slider_before;
 #endif
-    for (a = 0; a < set->count; ++a)
-        for (r = 0; r < BS_ROWS; ++r) {
-            bs_real v = row_velocity(scene, set, a, r, u_beam, u_slider);
-#if BS_WITH_RESTITUTION
-            if (r == 0)
-                v += scene->e_n * row_velocity(scene, set, a, 0, u_beam_before, u_slider_before);
+    set->free_velocity[BS_ROWS * a] = c_n;
+#if BS_WITH_FRICTION
+    set->free_velocity[BS_ROWS * a + 1] = row_velocity(set, a, 1, v->at[0], v->at[1], u_slider);
 #endif
-            set->free_velocity[BS_ROWS * a + r] = v;
-        }
 }
 
-void bs_contact_delassus(const bs_scene *scene, bs_contact_set *set)
+/* One corner in contact (most contact steps): its velocity and self
+ * products in one pass. */
+static void problem_of_one(const bs_scene *scene, const bs_step_constants *k, bs_contact_set *set,
+                           const bs_real *u_beam, const bs_real *u_slider, const bs_real *u_beam_before,
+                           const bs_real *u_slider_before)
 {
-    const int rows = BS_ROWS * set->count;
-    int i, j, k;
+    const bs_real *phi = set->phi[0], *slope = set->slope[0];
+    shape_velocities v = { { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) } };
+    bs_real dot[4] = { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) };
+    int i;
+    for (i = 0; i < BS_NMODES(scene); ++i) {
+        const bs_real gp = MODE_GAIN(k, i) * phi[i], gs = MODE_GAIN(k, i) * slope[i];
+        v.at[0] += phi[i] * u_beam[i];
+        v.at[1] += slope[i] * u_beam[i];
+#if BS_WITH_RESTITUTION
+        v.at[2] += phi[i] * u_beam_before[i];
+        v.at[3] += slope[i] * u_beam_before[i];
+#endif
+        dot[0] += gp * phi[i];
+        dot[1] += gp * slope[i];
+        dot[3] += gs * slope[i];
+    }
+    (void)u_beam_before;
+    dot[2] = dot[1];
+    free_velocity(k, set, 0, &v, u_slider, u_slider_before);
+    delassus_block(k, set, 0, 0, dot);
+}
 
-    for (i = 0; i < rows; ++i) {
-        const bs_real *slider_i = set->dir_slider[i];
-        /* beam part of M^-1 W_i, formed once per row; a local copy even without
-         * the implicit gains: the stores to set->delassus may alias dir_beam, so
-         * through a pointer the compiler reloads row i for every entry (the
-         * explicit Cortex-M builds ran 2-4 % more instructions in their worst steps) */
-        bs_real beam_i[BS_MAX_MODES];
-#if BS_WITH_ROTATION
-        const bs_real rotation_i = scene->inertia_inv * slider_i[2];
+/* Two corners in contact (the rest but a few): velocities, self and cross
+ * products in one pass. */
+static void problem_of_two(const bs_scene *scene, const bs_step_constants *k, bs_contact_set *set,
+                           const bs_real *u_beam, const bs_real *u_slider, const bs_real *u_beam_before,
+                           const bs_real *u_slider_before)
+{
+    const bs_real *phi_a = set->phi[0], *slope_a = set->slope[0], *phi_b = set->phi[1], *slope_b = set->slope[1];
+    shape_velocities va = { { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) } };
+    shape_velocities vb = { { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) } };
+    bs_real aa[4] = { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) };
+    bs_real bb[4] = { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) };
+    bs_real ba[4] = { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) };
+    int i;
+    for (i = 0; i < BS_NMODES(scene); ++i) {
+        const bs_real gp = MODE_GAIN(k, i) * phi_b[i], gs = MODE_GAIN(k, i) * slope_b[i];
+        va.at[0] += phi_a[i] * u_beam[i];
+        va.at[1] += slope_a[i] * u_beam[i];
+        vb.at[0] += phi_b[i] * u_beam[i];
+        vb.at[1] += slope_b[i] * u_beam[i];
+#if BS_WITH_RESTITUTION
+        va.at[2] += phi_a[i] * u_beam_before[i];
+        va.at[3] += slope_a[i] * u_beam_before[i];
+        vb.at[2] += phi_b[i] * u_beam_before[i];
+        vb.at[3] += slope_b[i] * u_beam_before[i];
 #endif
-        for (k = 0; k < BS_NMODES(scene); ++k)
-#if BS_WITH_IMPLICIT
-            beam_i[k] = set->dir_beam[i][k] * scene->mode_gain[k];
-#else
-            beam_i[k] = set->dir_beam[i][k];
+        aa[0] += MODE_GAIN(k, i) * phi_a[i] * phi_a[i];
+        aa[1] += MODE_GAIN(k, i) * phi_a[i] * slope_a[i];
+        aa[3] += MODE_GAIN(k, i) * slope_a[i] * slope_a[i];
+        bb[0] += gp * phi_b[i];
+        bb[1] += gp * slope_b[i];
+        bb[3] += gs * slope_b[i];
+        ba[0] += gp * phi_a[i];
+        ba[1] += gp * slope_a[i];
+        ba[2] += gs * phi_a[i];
+        ba[3] += gs * slope_a[i];
+    }
+    (void)u_beam_before;
+    aa[2] = aa[1];
+    bb[2] = bb[1];
+    free_velocity(k, set, 0, &va, u_slider, u_slider_before);
+    free_velocity(k, set, 1, &vb, u_slider, u_slider_before);
+    delassus_block(k, set, 0, 0, aa);
+    delassus_block(k, set, 1, 1, bb);
+    delassus_block(k, set, 1, 0, ba);
+}
+
+void bs_contact_problem(const bs_scene *scene, const bs_step_constants *k, bs_contact_set *set,
+                        const bs_real *u_beam, const bs_real *u_slider, const bs_real *u_beam_before,
+                        const bs_real *u_slider_before)
+{
+    const int corners = (set->count > 0 && set->id[0] < BS_CORNERS) + (set->count > 1 && set->id[1] < BS_CORNERS);
+    int a, b, i;
+
+    if (set->count == 1 && corners == 1) {
+        problem_of_one(scene, k, set, u_beam, u_slider, u_beam_before, u_slider_before);
+        return;
+    }
+    if (set->count == 2 && corners == 2) {
+        problem_of_two(scene, k, set, u_beam, u_slider, u_beam_before, u_slider_before);
+        return;
+    }
+    /* stops, three or more contacts: pair by pair */
+    for (a = 0; a < set->count; ++a) {
+        const int corner = set->id[a] < BS_CORNERS;
+        shape_velocities v = { { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) } };
+        bs_real dot[4];
+        if (corner)
+            for (i = 0; i < BS_NMODES(scene); ++i) {
+                v.at[0] += set->phi[a][i] * u_beam[i];
+                v.at[1] += set->slope[a][i] * u_beam[i];
+#if BS_WITH_RESTITUTION
+                v.at[2] += set->phi[a][i] * u_beam_before[i];
+                v.at[3] += set->slope[a][i] * u_beam_before[i];
 #endif
-        for (j = i; j < rows; ++j) {
-            const bs_real *beam_j = set->dir_beam[j];
-            const bs_real *slider_j = set->dir_slider[j];
-            bs_real g = scene->mass_inv * (slider_i[0] * slider_j[0] + slider_i[1] * slider_j[1]);
-#if BS_WITH_ROTATION
-            g += rotation_i * slider_j[2];
-#endif
-            for (k = 0; k < BS_NMODES(scene); ++k)
-                g += beam_i[k] * beam_j[k];
-            set->delassus[i][j] = g;
-            set->delassus[j][i] = g;
+            }
+        free_velocity(k, set, a, &v, u_slider, u_slider_before);
+        for (b = 0; b <= a; ++b) {
+            const int both = corner && set->id[b] < BS_CORNERS;
+            if (both)
+                cross_products(scene, k, set, a, b, dot);
+            delassus_block(k, set, a, b, both ? dot : (const bs_real *)0);
         }
-        set->delassus[i][i] *= BS_R(1.0) + (i % BS_ROWS ? BS_CONTACT_COMPLIANCE_T : BS_CONTACT_COMPLIANCE);
     }
 }
 
-void bs_contact_apply(const bs_scene *scene, const bs_contact_set *set,
+/* Contact a's push on the slider and the coefficients of phi and phi' in
+ * its push on the beam: W P = along_phi phi + along_slope phi' (beam),
+ * push (slider). */
+BS_INLINE void percussion_of(const bs_contact_set *set, int a, bs_real *along_phi, bs_real *along_slope,
+                             bs_real *push)
+{
+    const bs_real *p = &set->percussion[BS_ROWS * a];
+    const bs_real *normal = set->dir_slider[BS_ROWS * a];
+    int c;
+    *along_phi = set->beam_coef[a][0][0] * p[0];
+    *along_slope = set->beam_coef[a][0][1] * p[0];
+    for (c = 0; c < BS_SLIDER_DOF; ++c)
+        push[c] += normal[c] * p[0];
+#if BS_WITH_FRICTION
+    {
+        const bs_real *tangent = set->dir_slider[BS_ROWS * a + 1];
+        *along_phi += set->beam_coef[a][1][0] * p[1];
+        *along_slope += set->beam_coef[a][1][1] * p[1];
+        for (c = 0; c < BS_SLIDER_DOF; ++c)
+            push[c] += tangent[c] * p[1];
+    }
+#endif
+}
+
+void bs_contact_apply(const bs_scene *scene, const bs_step_constants *k, const bs_contact_set *set,
                       bs_real *u_beam, bs_real *u_slider)
 {
-    int i, k;
+    bs_real push[BS_SLIDER_DOF] = { BS_R(0.0) }, along_phi[2], along_slope[2];
+    int a, i;
 
-    for (i = 0; i < BS_ROWS * set->count; ++i) {
-        const bs_real p = set->percussion[i];
-        const bs_real *slider = set->dir_slider[i];
-        for (k = 0; k < BS_NMODES(scene); ++k)
-#if BS_WITH_IMPLICIT
-            u_beam[k] += scene->mode_gain[k] * set->dir_beam[i][k] * p;
-#else
-            u_beam[k] += set->dir_beam[i][k] * p;
-#endif
-        u_slider[0] += scene->mass_inv * slider[0] * p;
-        u_slider[1] += scene->mass_inv * slider[1] * p;
-#if BS_WITH_ROTATION
-        u_slider[2] += scene->inertia_inv * slider[2] * p;
-#endif
+    if (set->count == 2 && set->id[1] < BS_CORNERS) { /* two corners: one pass over the modes */
+        percussion_of(set, 0, &along_phi[0], &along_slope[0], push);
+        percussion_of(set, 1, &along_phi[1], &along_slope[1], push);
+        for (i = 0; i < BS_NMODES(scene); ++i)
+            u_beam[i] += MODE_GAIN(k, i) * ((along_phi[0] * set->phi[0][i] + along_slope[0] * set->slope[0][i])
+                                            + (along_phi[1] * set->phi[1][i] + along_slope[1] * set->slope[1][i]));
+    } else {
+        for (a = 0; a < set->count; ++a) {
+            percussion_of(set, a, &along_phi[0], &along_slope[0], push);
+            if (set->id[a] < BS_CORNERS)
+                for (i = 0; i < BS_NMODES(scene); ++i)
+                    u_beam[i] += MODE_GAIN(k, i) * (along_phi[0] * set->phi[a][i] + along_slope[0] * set->slope[a][i]);
+        }
     }
+    u_slider[0] += k->mass_inv * push[0];
+    u_slider[1] += k->mass_inv * push[1];
+#if BS_WITH_ROTATION
+    u_slider[2] += k->inertia_inv * push[2];
+#endif
 }

@@ -22,25 +22,25 @@ typedef struct bs_contact_frame {
 } bs_contact_frame;
 
 /* Finds the contacts with g_N < 0 and fills set->count, id, mu (with
- * friction) and the force directions W. Returns BS_OK, or BS_E_ESCAPED when a
- * slot corner is on the wrong side of the beam's axis (the slider has left
- * the beam). */
-bs_status bs_contact_detect(const bs_scene *scene, const bs_contact_frame *frame, bs_contact_set *set);
+ * friction), phi and phi' at each corner in contact and the coefficients and
+ * slider parts of its force directions W (k: the sim's prepared constants).
+ * Returns BS_OK, or BS_E_ESCAPED when a slot corner is on the wrong side of
+ * the beam's axis (the slider has left the beam). */
+bs_status bs_contact_detect(const bs_scene *scene, const bs_step_constants *k, const bs_contact_frame *frame,
+                            bs_contact_set *set);
 
-/* The free velocity c of the contact problem, set->free_velocity: per active
- * contact the relative velocity gamma = W^T u at the free velocities u
- * (u_slider: x_C, z_r, beta velocities, in the base's frame: no base term),
- * plus on the normal row e_N times gamma_N at the velocities before the step
- * (Newton's impact law). */
-void bs_contact_free_velocity(const bs_scene *scene, bs_contact_set *set,
-                              const bs_real *u_beam, const bs_real *u_slider,
-                              const bs_real *u_beam_before, const bs_real *u_slider_before);
-
-/* Delassus operator G = W^T M^-1 W of the active contacts. */
-void bs_contact_delassus(const bs_scene *scene, bs_contact_set *set);
+/* The contact problem of the contacts found: set->free_velocity, c = W^T u
+ * at the free velocities u (u_slider: x_C, z_r, beta velocities, in the
+ * base's frame: no base term) plus on the normal row e_N times W_N^T u at the
+ * velocities before the step (Newton's impact law); and set->delassus,
+ * G = W^T M^-1 W with the compliance on its diagonal. One pass over the
+ * modes per contact and per pair of corners. */
+void bs_contact_problem(const bs_scene *scene, const bs_step_constants *k, bs_contact_set *set,
+                        const bs_real *u_beam, const bs_real *u_slider, const bs_real *u_beam_before,
+                        const bs_real *u_slider_before);
 
 /* u += M^-1 W P. */
-void bs_contact_apply(const bs_scene *scene, const bs_contact_set *set,
+void bs_contact_apply(const bs_scene *scene, const bs_step_constants *k, const bs_contact_set *set,
                       bs_real *u_beam, bs_real *u_slider);
 
 #endif

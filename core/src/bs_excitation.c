@@ -60,18 +60,25 @@ static bs_real cosine_series(bs_real d)
     return BS_R(1.0) - d2 * BS_R(0.5) * c;
 }
 
+/* The folded angle d in [0, pi/4] of a phase and whether it was folded
+ * (d = pi/2 - x). */
+static bs_real folded_angle(uint64_t phase, int *folded)
+{
+    const uint64_t within = phase & (QUADRANT - 1);
+    const uint64_t from_axis = (*folded = within > QUADRANT / 2) ? QUADRANT - within : within;
+#if BS_REAL_FLOAT
+    /* 31 bits are plenty for float, and u32 -> float is one instruction */
+    return (bs_real)(uint32_t)(from_axis >> 30) * (BS_R(1.5707963267948966) / BS_R(4294967296.0));
+#else
+    return (bs_real)from_axis * (BS_R(1.5707963267948966) / BS_R(4611686018427387904.0));
+#endif
+}
+
 void bs_excitation_sincos(uint64_t phase, bs_real *sine, bs_real *cosine)
 {
     const unsigned quadrant = (unsigned)(phase >> 62);
-    const uint64_t within = phase & (QUADRANT - 1);
-    const int folded = within > QUADRANT / 2;
-    const uint64_t from_axis = folded ? QUADRANT - within : within; /* d in quarter turns * 2^62 */
-#if BS_REAL_FLOAT
-    /* 31 bits are plenty for float, and u32 -> float is one instruction */
-    const bs_real d = (bs_real)(uint32_t)(from_axis >> 30) * (BS_R(1.5707963267948966) / BS_R(4294967296.0));
-#else
-    const bs_real d = (bs_real)from_axis * (BS_R(1.5707963267948966) / BS_R(4611686018427387904.0));
-#endif
+    int folded;
+    const bs_real d = folded_angle(phase, &folded);
     const bs_real s_d = sine_series(d);
     const bs_real c_d = cosine_series(d);
     const bs_real s = folded ? c_d : s_d; /* sin and cos of the angle within the quadrant */
@@ -85,11 +92,23 @@ void bs_excitation_sincos(uint64_t phase, bs_real *sine, bs_real *cosine)
     }
 }
 
+/* cos of the phase alone: one series instead of two (the step needs no
+ * sine), bit for bit the cosine of bs_excitation_sincos. */
+static bs_real cosine_of(uint64_t phase)
+{
+    const unsigned quadrant = (unsigned)(phase >> 62);
+    int folded;
+    const bs_real d = folded_angle(phase, &folded);
+    /* cos x in quadrant 0 is c, in 1 -s, in 2 -c, in 3 s, with (s, c) the
+     * sine and cosine within the quadrant: of d, swapped when folded */
+    const int wants_sine = (quadrant & 1u) != (unsigned)folded;
+    const bs_real value = wants_sine ? sine_series(d) : cosine_series(d);
+    return quadrant == 1 || quadrant == 2 ? -value : value;
+}
+
 bs_real bs_excitation_step_mean(uint64_t phase_mid, bs_real step_accel)
 {
-    bs_real s, c;
-    bs_excitation_sincos(phase_mid, &s, &c);
-    return -step_accel * c;
+    return -step_accel * cosine_of(phase_mid);
 }
 
 uint64_t bs_excitation_phase_step_half(double frequency, double dt)

@@ -28,16 +28,24 @@
  * Two contacts (the rest of the contact steps of the scenes): exact too. Two
  * corners on the same face of the slot see almost the same beam motion, so
  * their rows of G are nearly parallel and Gauss-Seidel crawls (hundreds of
- * sweeps, docs/model.md 9.5). solve_pair does one sweep for the modes, then
- * the active-set method: the modes the sweep reached define a linear system
- * in the unknowns they leave unset (Gaussian
- * elimination with partial pivoting, active_set_solve; redundant rows get the
- * basic solution); if its solution breaks a law, next_modes picks the modes
- * of the next trial (below) and the system is solved again; a mode pair that
- * repeats is replaced by the first one not yet tried. So at most MODES^2 = 16
- * systems of at most 4 unknowns: a hard bound, and with the right modes the
- * exact solution (Box2D's block solver does the same enumeration for the two
- * normal rows of a face; here the tangential rows are in the block too).
+ * sweeps, docs/model.md 9.5). solve_pair runs the active-set method from
+ * the last step's modes (the warm start's; a contact new to the set:
+ * sticking if it approaches, else lifting off), which in a lasting contact
+ * are the solution's (on fig6 in 71 % of the two-contact steps): the modes
+ * define a linear system in the unknowns they leave unset, solved by
+ * Cramer's rule with one reciprocal (pair_system: up to three unknowns,
+ * every mode pair but stick-stick; that one, and a system near singular, by
+ * Gaussian elimination with partial pivoting, active_set_solve, where
+ * redundant rows get the basic solution). A solution whose laws hold by
+ * sign (P_N >= 0 and inside the cone while sticking, xi_T along the slip
+ * while slipping, xi_N >= 0 while lifting off) is the solution; the
+ * residual is computed only where the signs do not settle it. Else
+ * next_modes picks the modes of the next trial (below) and the system is
+ * solved again; a mode pair that repeats is replaced by the first one not
+ * yet tried. So at most MODES^2 = 16 systems of at most 4 unknowns: a hard
+ * bound, and with the right modes the exact solution (Box2D's block solver
+ * does the same enumeration for the two normal rows of a face; here the
+ * tangential rows are in the block too).
  *
  * Next modes: a breach on the percussion's side (P_N < 0, P_T outside the
  * cone) is the surest sign of a wrong mode, so every contact with one moves;
@@ -78,6 +86,7 @@
  * a single contact's exact solve then reports -1 and whether it was exact.
  */
 #include "bs_pgs.h"
+#include "bs_inline.h"
 #include "bs_port.h"
 
 #define ROWS BS_ROWS
@@ -98,7 +107,7 @@ typedef struct bs_goal {
 
 /* xi of contact a's rows with the current P: both rows in one pass over P, a
  * contact's pair of columns at a time; each sum still adds in the order of j. */
-static void velocity(const bs_contact_set *set, int a, bs_real *xi)
+BS_INLINE void velocity(const bs_contact_set *set, int a, bs_real *xi)
 {
     const bs_real *p = set->percussion;
     const bs_real *const end = p + ROWS * set->count;
@@ -122,7 +131,7 @@ static void velocity(const bs_contact_set *set, int a, bs_real *xi)
 }
 
 /* prox of the contact laws with step r: P_N first, then P_T in the new cone. */
-static void prox(const bs_contact_set *set, int a, bs_real step, const bs_real *xi, const bs_real *p,
+BS_INLINE void prox(const bs_contact_set *set, int a, bs_real step, const bs_real *xi, const bs_real *p,
                  bs_real *out)
 {
     const bs_real p_n = p[0] - step * xi[0];
@@ -208,6 +217,21 @@ static int solve_contact(bs_contact_set *set, const bs_real *step, int a)
 
 /* Natural-map residual of the current P; xi receives xi = G P + c of every
  * row on the way. */
+/* The residual at P = set->percussion from its velocities xi, known. */
+BS_INLINE bs_real residual_at(const bs_contact_set *set, const bs_real *step, const bs_real *xi)
+{
+    bs_real sum = BS_R(0.0);
+    int a, r;
+    for (a = 0; a < set->count; ++a) {
+        const bs_real *p = &set->percussion[ROWS * a];
+        bs_real projected[ROWS];
+        prox(set, a, step[a], &xi[ROWS * a], p, projected);
+        for (r = 0; r < ROWS; ++r)
+            sum += bs_fabs(p[r] - projected[r]);
+    }
+    return sum;
+}
+
 static bs_real residual_of(const bs_contact_set *set, const bs_real *step, bs_real *xi)
 {
     bs_real sum = BS_R(0.0);
@@ -231,7 +255,7 @@ static bs_real residual(const bs_contact_set *set, const bs_real *step)
 }
 
 /* r_i = 1 / max(diag G_ii), once per solve. */
-static void step_sizes(const bs_contact_set *set, bs_real *step)
+BS_INLINE void step_sizes(const bs_contact_set *set, bs_real *step)
 {
     int a;
     for (a = 0; a < set->count; ++a) {
@@ -246,7 +270,7 @@ static void step_sizes(const bs_contact_set *set, bs_real *step)
 
 /* sum_i r_i |c_i|_1: the percussion that would stop each contact's free
  * motion on its own. */
-static bs_real percussion_scale(const bs_contact_set *set, const bs_real *step)
+BS_INLINE bs_real percussion_scale(const bs_contact_set *set, const bs_real *step)
 {
     bs_real scale = BS_R(0.0);
     int a, r;
@@ -263,15 +287,8 @@ bs_real bs_pgs_residual(const bs_contact_set *set)
     return residual(set, step);
 }
 
-bs_real bs_pgs_scale(const bs_contact_set *set)
-{
-    bs_real step[BS_MAX_CONTACTS];
-    step_sizes(set, step);
-    return percussion_scale(set, step);
-}
-
 /* Mode contact a shows at percussion p. */
-static int mode_of(const bs_contact_set *set, int a)
+BS_INLINE int mode_of(const bs_contact_set *set, int a)
 {
     const bs_real *p = &set->percussion[ROWS * a];
     if (!(p[0] > BS_R(0.0)))
@@ -477,33 +494,254 @@ static int next_modes(bs_contact_set *set, const bs_real *step, int *mode, const
     return broken;
 }
 
-/* Two contacts (docs/design.md 6): one sweep, whose answer is often
- * already the solution (contacts on different faces); else the active-set
- * method: the modes the sweep reached, then the mode each trial's broken law
- * points to (Murty's least-index rule), then every mode pair not yet tried, in
- * a fixed order, until the residual is within the tolerance. At most MODES^2 small
- * systems, a hard bound on the work; the P with the smallest residual is kept.
- * The near-parallel rows of two corners on one face, where Gauss-Seidel
- * crawls, cost nothing extra here. */
-static void solve_pair(bs_contact_set *set, const bs_real *step, bs_goal goal, bs_step_report *report)
+/* The mode of contact a to start from: the one its warm start shows, or
+ * for a contact without a percussion sticking if it approaches (under the
+ * others' warm percussions), else lifting off. */
+BS_INLINE int warm_mode(const bs_contact_set *set, int a)
 {
-    bs_real m[2 * ROWS][MAX_ROWS + 1]; /* [A | b] of a pair's 2 ROWS rows */
-    bs_real best[2 * ROWS], trial[2 * ROWS], xi[2 * ROWS];
-    bs_real best_residual, trial_residual;
-    unsigned tried = 0; /* bit MODES * mode[0] + mode[1]: that pair solved */
-    int mode[2], index, j, searching;
+    const bs_real *p = &set->percussion[ROWS * a];
+    bs_real total = BS_R(0.0);
+    int b;
+    for (b = 0; b < set->count; ++b)
+        total += bs_fabs(set->percussion[ROWS * b]);
+    /* a P_N within rounding (16 eps) of 0 against the set's total is 0, as
+     * the step leaves it after a take-off (again a warm start from elsewhere
+     * may not) */
+    if (!(p[0] > BS_R(16.0) * BS_REAL_EPS * total)) {
+        /* no percussion: sticking if it approaches under the others' warm
+         * percussions, else lifting off */
+        const bs_real *g = set->delassus[ROWS * a];
+        bs_real v = set->free_velocity[ROWS * a];
+        for (b = 0; b < ROWS * set->count; ++b)
+            if (b / ROWS != a)
+                v += g[b] * set->percussion[b];
+        return v < BS_R(0.0) ? MODE_STICK : MODE_TAKEOFF;
+    }
+#if BS_WITH_FRICTION
+    {
+        /* on the cone to rounding (16 eps): slipping. A slip leaves P_T at
+         * -s mu P_N exactly, but a warm start from elsewhere (a solver's
+         * answer, a checkpoint's) may sit an ulp inside it */
+        const bs_real limit = set->mu[a] * p[0] * (BS_R(1.0) - BS_R(16.0) * BS_REAL_EPS);
+        if (!(p[1] < limit && p[1] > -limit))
+            return p[1] > BS_R(0.0) ? MODE_SLIP_NEG : MODE_SLIP_POS;
+    }
+#endif
+    return MODE_STICK;
+}
 
-    /* one sweep for the modes: its P is not checked (the system of its modes
-     * gives the exact P of those modes, at the same price as its residual) */
-    solve_contact(set, step, 0);
-    solve_contact(set, step, 1);
-    report->sweeps = 1;
-    mode[0] = mode_of(set, 0);
-    mode[1] = mode_of(set, 1);
-    best_residual = BS_R(0.0);
-    for (j = 0; j < 2 * ROWS; ++j) /* both replaced by the first trial */
+/* x = A^-1 b for 2 x 2 A by Cramer's rule (one reciprocal); 0 when A is
+ * near singular: |det A| not above 16 eps of the square of its size
+ * (redundant contacts, left to active_set_solve's basic solution). */
+BS_INLINE int cramer2(bs_real a00, bs_real a01, bs_real a10, bs_real a11, bs_real b0, bs_real b1, bs_real *x)
+{
+    const bs_real det = a00 * a11 - a01 * a10;
+    const bs_real size = bs_fabs(a00) + bs_fabs(a01) + bs_fabs(a10) + bs_fabs(a11);
+    bs_real inverse;
+    if (!(bs_fabs(det) > BS_R(16.0) * BS_REAL_EPS * size * size))
+        return 0;
+    inverse = BS_R(1.0) / det;
+    x[0] = (b0 * a11 - a01 * b1) * inverse;
+    x[1] = (a00 * b1 - a10 * b0) * inverse;
+    return 1;
+}
+
+#if BS_WITH_FRICTION
+/* The same for 3 x 3 A (rows a[i]) by cofactors. */
+BS_INLINE int cramer3(const bs_real (*a)[3], const bs_real *b, bs_real *x)
+{
+    const bs_real c00 = a[1][1] * a[2][2] - a[1][2] * a[2][1], c01 = a[1][2] * a[2][0] - a[1][0] * a[2][2];
+    const bs_real c02 = a[1][0] * a[2][1] - a[1][1] * a[2][0];
+    const bs_real det = a[0][0] * c00 + a[0][1] * c01 + a[0][2] * c02;
+    bs_real size = BS_R(0.0), inverse;
+    int i, j;
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j)
+            size += bs_fabs(a[i][j]);
+    if (!(bs_fabs(det) > BS_R(16.0) * BS_REAL_EPS * size * size * size))
+        return 0;
+    inverse = BS_R(1.0) / det;
+    x[0] = (c00 * b[0] + (a[0][2] * a[2][1] - a[0][1] * a[2][2]) * b[1] + (a[0][1] * a[1][2] - a[0][2] * a[1][1]) * b[2])
+           * inverse;
+    x[1] = (c01 * b[0] + (a[0][0] * a[2][2] - a[0][2] * a[2][0]) * b[1] + (a[0][2] * a[1][0] - a[0][0] * a[1][2]) * b[2])
+           * inverse;
+    x[2] = (c02 * b[0] + (a[0][1] * a[2][0] - a[0][0] * a[2][1]) * b[1] + (a[0][0] * a[1][1] - a[0][1] * a[1][0]) * b[2])
+           * inverse;
+    return 1;
+}
+
+/* P_T / P_N of a slipping contact (slip +: xi_T > 0, P_T = -mu P_N). */
+BS_INLINE bs_real fold_of(const bs_contact_set *set, int a, int mode)
+{
+    return mode == MODE_SLIP_POS ? -set->mu[a] : set->mu[a];
+}
+#endif
+
+/* The system two contacts' modes define (header comment), solved in closed
+ * form into trial: rows and columns 0..3 are P_N,0, P_T,0, P_N,1, P_T,1 (with
+ * friction); a slipping contact's P_T is its fold times P_N, folded into the
+ * P_N column; a contact lifting off has P = 0. Every pair of modes but
+ * stick-stick has at most three unknowns, written out here with constant
+ * indices. Returns 1, or 0 for stick-stick and near-singular systems, which
+ * active_set_solve takes instead. */
+BS_INLINE int pair_system(const bs_contact_set *set, const int *mode, bs_real *trial)
+{
+    const bs_real (*g)[MAX_ROWS] = (const bs_real(*)[MAX_ROWS])set->delassus;
+    const bs_real *c = set->free_velocity;
+    bs_real x[3];
+    int j;
+#if BS_WITH_FRICTION
+    const int kind0 = mode[0] == MODE_TAKEOFF ? 0 : (mode[0] == MODE_STICK ? 2 : 1);
+    const int kind1 = mode[1] == MODE_TAKEOFF ? 0 : (mode[1] == MODE_STICK ? 2 : 1);
+    const bs_real f0 = kind0 == 1 ? fold_of(set, 0, mode[0]) : BS_R(0.0);
+    const bs_real f1 = kind1 == 1 ? fold_of(set, 1, mode[1]) : BS_R(0.0);
+    for (j = 0; j < 4; ++j)
+        trial[j] = BS_R(0.0);
+    switch (3 * kind0 + kind1) {
+    case 0: /* both lift off */
+        return 1;
+    case 1: /* 0 lifts off, 1 slips */
+    case 3: { /* 0 slips, 1 lifts off */
+        const int n = kind0 ? 0 : 2;
+        const bs_real f = kind0 ? f0 : f1;
+        const bs_real a = g[n][n] + f * g[n][n + 1];
+        if (!(bs_fabs(a) > BS_R(16.0) * BS_REAL_EPS * (bs_fabs(g[n][n]) + bs_fabs(f * g[n][n + 1]))))
+            return 0;
+        trial[n] = -c[n] / a;
+        trial[n + 1] = f * trial[n];
+        return 1;
+    }
+    case 2: /* 0 lifts off, 1 sticks */
+    case 6: { /* 0 sticks, 1 lifts off */
+        const int n = kind0 ? 0 : 2;
+        if (!cramer2(g[n][n], g[n][n + 1], g[n + 1][n], g[n + 1][n + 1], -c[n], -c[n + 1], x))
+            return 0;
+        trial[n] = x[0];
+        trial[n + 1] = x[1];
+        return 1;
+    }
+    case 4: /* both slip */
+        if (!cramer2(g[0][0] + f0 * g[0][1], g[0][2] + f1 * g[0][3], g[2][0] + f0 * g[2][1], g[2][2] + f1 * g[2][3],
+                     -c[0], -c[2], x))
+            return 0;
+        trial[0] = x[0];
+        trial[1] = f0 * x[0];
+        trial[2] = x[1];
+        trial[3] = f1 * x[1];
+        return 1;
+    case 5: { /* 0 slips, 1 sticks: unknowns P_N,0, P_N,1, P_T,1 */
+        const bs_real a[3][3] = { { g[0][0] + f0 * g[0][1], g[0][2], g[0][3] },
+                                  { g[2][0] + f0 * g[2][1], g[2][2], g[2][3] },
+                                  { g[3][0] + f0 * g[3][1], g[3][2], g[3][3] } };
+        const bs_real b[3] = { -c[0], -c[2], -c[3] };
+        if (!cramer3(a, b, x))
+            return 0;
+        trial[0] = x[0];
+        trial[1] = f0 * x[0];
+        trial[2] = x[1];
+        trial[3] = x[2];
+        return 1;
+    }
+    case 7: { /* 0 sticks, 1 slips: unknowns P_N,0, P_T,0, P_N,1 */
+        const bs_real a[3][3] = { { g[0][0], g[0][1], g[0][2] + f1 * g[0][3] },
+                                  { g[1][0], g[1][1], g[1][2] + f1 * g[1][3] },
+                                  { g[2][0], g[2][1], g[2][2] + f1 * g[2][3] } };
+        const bs_real b[3] = { -c[0], -c[1], -c[2] };
+        if (!cramer3(a, b, x))
+            return 0;
+        trial[0] = x[0];
+        trial[1] = x[1];
+        trial[2] = x[2];
+        trial[3] = f1 * x[2];
+        return 1;
+    }
+    default: /* both stick: four unknowns */
+        return 0;
+    }
+#else
+    trial[0] = trial[1] = BS_R(0.0);
+    if (mode[0] == MODE_TAKEOFF && mode[1] == MODE_TAKEOFF)
+        return 1;
+    if (mode[0] == MODE_TAKEOFF || mode[1] == MODE_TAKEOFF) {
+        const int n = mode[0] == MODE_TAKEOFF;
+        if (!(g[n][n] > BS_R(0.0)))
+            return 0;
+        trial[n] = -c[n] / g[n][n];
+        return 1;
+    }
+    if (!cramer2(g[0][0], g[0][1], g[1][0], g[1][1], -c[0], -c[1], x))
+        return 0;
+    trial[0] = x[0];
+    trial[1] = x[1];
+    (void)j;
+    return 1;
+#endif
+}
+
+/* xi = G P + c of the two contacts' rows at P = set->percussion. */
+BS_INLINE void pair_velocities(const bs_contact_set *set, bs_real *xi)
+{
+    const bs_real *p = set->percussion;
+    int i, j;
+    for (i = 0; i < 2 * ROWS; ++i) {
+        const bs_real *g = set->delassus[i];
+        bs_real v = set->free_velocity[i] + g[0] * p[0];
+        for (j = 1; j < 2 * ROWS; ++j)
+            v += g[j] * p[j];
+        xi[i] = v;
+    }
+}
+
+/* 1 if both contacts' laws hold by sign at P = set->percussion, xi its
+ * velocities: P_N >= 0 and inside the cone while sticking, xi_T along the
+ * slip while slipping, xi_N >= 0 while lifting off. */
+BS_INLINE int pair_laws_hold(const bs_contact_set *set, const int *mode, const bs_real *xi)
+{
+    int a;
+    for (a = 0; a < 2; ++a) {
+        const bs_real *p = &set->percussion[ROWS * a];
+        if (mode[a] == MODE_TAKEOFF) {
+            if (!(xi[ROWS * a] >= BS_R(0.0)))
+                return 0;
+            continue;
+        }
+        if (!(p[0] >= BS_R(0.0)))
+            return 0;
+#if BS_WITH_FRICTION
+        if (mode[a] == MODE_STICK ? !(p[1] <= set->mu[a] * p[0] && p[1] >= -set->mu[a] * p[0])
+                                  : !((mode[a] == MODE_SLIP_POS ? xi[ROWS * a + 1] : -xi[ROWS * a + 1]) >= BS_R(0.0)))
+            return 0;
+#endif
+    }
+    return 1;
+}
+
+/* Two contacts (docs/design.md 6): the active-set method from the warm
+ * start's modes, which in a lasting contact are the solution's (71 % of
+ * fig6's two-contact steps); each trial's system solved in closed form
+ * (pair_system; active_set_solve where that cannot: stick-stick, redundant
+ * contacts); a trial whose laws hold by sign is the solution. Otherwise the
+ * mode each broken law points to (next_modes), and a mode pair that repeats
+ * gives way to the first not yet tried, in a fixed order: at most MODES^2
+ * small systems, a hard bound on the work. Only where the signs do not
+ * settle it is the residual computed: a trial at rounding's floor (exact,
+ * 64 eps s) is the solution whatever its signs, and if none holds, the P
+ * with the smallest residual is kept. The near-parallel rows of two corners
+ * on one face, where Gauss-Seidel crawls, cost nothing extra here. */
+static void solve_pair(bs_contact_set *set, const bs_real *step, bs_goal goal, int measure, bs_step_report *report)
+{
+    bs_real m[2 * ROWS][MAX_ROWS + 1]; /* [A | b] for active_set_solve */
+    bs_real best[2 * ROWS], trial[2 * ROWS], xi[2 * ROWS];
+    bs_real best_residual = BS_R(-1.0), trial_residual;
+    unsigned tried = 0; /* bit MODES * mode[0] + mode[1]: that pair solved */
+    int mode[2], index, j, closed;
+
+    mode[0] = warm_mode(set, 0);
+    mode[1] = warm_mode(set, 1);
+    report->sweeps = 0;
+    for (j = 0; j < 2 * ROWS; ++j) /* best: replaced by the first trial */
         best[j] = set->percussion[j];
-    for (searching = 1; searching;) {
+    for (;;) {
         index = MODES * mode[0] + mode[1];
         if (tried >> index & 1u) { /* a repeat: the first pair not yet tried */
             for (index = 0; index < MODES * MODES && (tried >> index & 1u); ++index)
@@ -514,24 +752,41 @@ static void solve_pair(bs_contact_set *set, const bs_real *step, bs_goal goal, b
             mode[1] = index % MODES;
         }
         tried |= 1u << index;
-        active_set_solve(set, mode, m, trial);
+        closed = pair_system(set, mode, trial);
+        if (!closed)
+            active_set_solve(set, mode, m, trial);
         ++report->systems;
         for (j = 0; j < 2 * ROWS; ++j)
             set->percussion[j] = trial[j];
-        trial_residual = residual_of(set, step, xi);
-        /* done when the laws hold and the residual is within the tolerance
-         * (within it alone is not enough: at small percussions a cone a few
-         * per cent off can be), or the residual is at rounding's floor; else
-         * the next modes (next_modes), and a repeat (or laws that hold above
-         * the tolerance: a dependent column left an equation unmet) goes on
-         * to the next pair not tried */
-        searching = trial_residual > goal.exact
-                    && (next_modes(set, step, mode, xi) > 0 || trial_residual > goal.tolerance);
-        if (!searching || tried == 1u << index || trial_residual < best_residual) {
+        pair_velocities(set, xi);
+        if (pair_laws_hold(set, mode, xi)) {
+            if (closed) { /* the exact solution of the right modes */
+                report->residual = measure ? residual_at(set, step, xi) : BS_R(-1.0);
+                report->converged = measure ? report->residual <= goal.tolerance : 1;
+                return;
+            }
+            /* a dependent column may have left an equation unmet */
+            trial_residual = residual_of(set, step, xi);
+            if (trial_residual <= goal.tolerance) {
+                report->residual = trial_residual;
+                report->converged = 1;
+                return;
+            }
+        } else {
+            /* at rounding's floor it is the solution whatever the signs */
+            trial_residual = residual_of(set, step, xi);
+            if (trial_residual <= goal.exact) {
+                report->residual = trial_residual;
+                report->converged = trial_residual <= goal.tolerance;
+                return;
+            }
+        }
+        if (best_residual < BS_R(0.0) || trial_residual < best_residual) {
             best_residual = trial_residual;
             for (j = 0; j < 2 * ROWS; ++j)
                 best[j] = trial[j];
         }
+        next_modes(set, step, mode, xi); /* unchanged modes: the next pair not tried */
     }
     for (j = 0; j < 2 * ROWS; ++j)
         set->percussion[j] = best[j];
@@ -540,15 +795,6 @@ static void solve_pair(bs_contact_set *set, const bs_real *step, bs_goal goal, b
 }
 
 #if BS_WITH_SUBSPACE
-/* The mode of contact a to start the active-set method from (three or more
- * contacts): the one its warm start shows, or for a contact new to the set
- * sticking if it approaches, else lifting off. */
-static int warm_mode(const bs_contact_set *set, int a)
-{
-    if (set->percussion[ROWS * a] > BS_R(0.0))
-        return mode_of(set, a);
-    return set->free_velocity[ROWS * a] < BS_R(0.0) ? MODE_STICK : MODE_TAKEOFF;
-}
 
 /* The active-set method over three or more contacts from the modes given,
  * while *budget lasts (one system each) and some law breaks; the P with the
@@ -659,10 +905,17 @@ void bs_pgs_solve(bs_contact_set *set, const bs_solver_options *options, bs_step
     if (set->count == 1) { /* exact by itself: the residual only when asked */
         const int exact = solve_contact(set, step, 0);
         report->sweeps = 1;
-        report->residual = options->measure_residual ? residual(set, step) : BS_R(-1.0);
-        report->converged = options->measure_residual ? report->residual <= goal.tolerance : exact;
+        if (options->measure_residual) {
+            bs_real xi[ROWS];
+            velocity(set, 0, xi);
+            report->residual = residual_at(set, step, xi);
+            report->converged = report->residual <= goal.tolerance;
+        } else {
+            report->residual = BS_R(-1.0);
+            report->converged = exact;
+        }
     } else if (set->count == 2) {
-        solve_pair(set, step, goal, report);
+        solve_pair(set, step, goal, options->measure_residual, report);
     } else {
         solve_many(set, step, goal, options->max_sweeps, report);
     }

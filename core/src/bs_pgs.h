@@ -14,8 +14,4 @@ void bs_pgs_solve(bs_contact_set *set, const bs_solver_options *options, bs_step
  * set->percussion, r_i = 1 / max(diag G_ii) [N s]. */
 bs_real bs_pgs_residual(const bs_contact_set *set);
 
-/* Percussion scale of the problem, sum_i r_i |c_i|_1 [N s]: what tol_rel is
- * relative to. */
-bs_real bs_pgs_scale(const bs_contact_set *set);
-
 #endif

@@ -9,6 +9,7 @@
  * are checked by hand below. The first failure names its field.
  */
 #include "beamslider.h"
+#include "bs_beam.h"
 #include "bs_piezo.h"
 #include "bs_sim_internal.h"
 
@@ -95,6 +96,17 @@ static int check_cross(const bs_scene *s, const char **field)
         for (j = 0; j < s->n_modes; ++j)
             if (!is_finite(s->stretch[i][j]) || s->stretch[i][j] != s->stretch[j][i])
                 return fail(field, "stretch");
+#ifdef BS_SCENE_STRETCH_USED
+    /* a core compiled against a scene skips the zeros of its S and gamma
+     * (core/src/bs_beam.h): another scene must have them there too */
+    for (i = 0; i < s->n_modes && i < BS_SCENE_MODES; ++i) {
+        if (s->gamma[i] != BS_R(0.0) && !BS_GAMMA_USED(i))
+            return fail(field, "gamma");
+        for (j = 0; j < s->n_modes && j < BS_SCENE_MODES; ++j)
+            if (s->stretch[i][j] != BS_R(0.0) && !BS_STRETCH_USED(i, j))
+                return fail(field, "stretch");
+    }
+#endif
     /* shape_scale must be shape_pieces / length (to rounding) */
     if (!is_finite(s->shape_scale)
         || !(s->shape_scale * s->length >= (bs_real)s->shape_pieces * (BS_R(1.0) - BS_R(1e-6))

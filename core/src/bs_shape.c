@@ -182,16 +182,3 @@ void bs_shape_expand(const bs_scene *scene, bs_real x, bs_shape_cache *cache)
      * from where the coefficients were taken */
     cache->centre = ((bs_real)j + BS_R(0.5) * (u0 + BS_R(1.0))) / scale;
 }
-
-void bs_shape_expanded(const bs_scene *scene, const bs_shape_cache *cache, bs_real t, int on_beam, bs_real *phi,
-                       bs_real *slope)
-{
-    const bs_real slope_scale = BS_R(2.0) * scene->shape_scale;
-    int k;
-    for (k = 0; k < BS_NMODES(scene); ++k) {
-        bs_real value, derivative;
-        bs_shape_taylor(cache->coef[k], t, &value, &derivative);
-        phi[k] = on_beam ? value : BS_R(0.0);
-        slope[k] = on_beam ? slope_scale * derivative : BS_R(0.0);
-    }
-}

@@ -4,6 +4,7 @@
 #ifndef BS_SHAPE_H
 #define BS_SHAPE_H
 
+#include "bs_inline.h"
 #include "bs_sim_layout.h"
 
 /* phi[k] = phi_k(x) [1/sqrt(kg)] and slope[k] = d phi_k / dx [1/(m sqrt(kg))]
@@ -37,7 +38,7 @@ static inline bs_real bs_shape_offset(const bs_scene *scene, const bs_shape_cach
 void bs_shape_expand(const bs_scene *scene, bs_real x, bs_shape_cache *cache);
 
 /* Value and t-derivative of sum_m c_m t^m, m < BS_SHAPE_TERMS (Horner). */
-static inline void bs_shape_taylor(const bs_real *c, bs_real t, bs_real *value, bs_real *derivative)
+BS_INLINE void bs_shape_taylor(const bs_real *c, bs_real t, bs_real *value, bs_real *derivative)
 {
     bs_real v = c[BS_SHAPE_TERMS - 1], d = BS_R(0.0);
     int m;
@@ -50,9 +51,25 @@ static inline void bs_shape_taylor(const bs_real *c, bs_real t, bs_real *value, 
 }
 
 /* phi[k] and slope[k] as bs_shape_eval gives them, from the expansion at
- * offset t (bs_shape_offset); 0 when on_beam is 0 (inside a clamp). */
-void bs_shape_expanded(const bs_scene *scene, const bs_shape_cache *cache, bs_real t, int on_beam, bs_real *phi,
-                       bs_real *slope);
+ * offset t (bs_shape_offset); 0 when on_beam is 0 (inside a clamp).
+ * slope_scale = 2 shape_scale. Inlined into the contact detection (its
+ * loops unrolled for a compiled scene). */
+BS_INLINE void bs_shape_expanded(const bs_scene *scene, const bs_shape_cache *cache, bs_real t, int on_beam,
+                                 bs_real slope_scale, bs_real *phi, bs_real *slope)
+{
+    int k;
+    if (!on_beam) { /* inside a clamp, which moves with the base */
+        for (k = 0; k < BS_NMODES(scene); ++k)
+            phi[k] = slope[k] = BS_R(0.0);
+        return;
+    }
+    for (k = 0; k < BS_NMODES(scene); ++k) {
+        bs_real value, derivative;
+        bs_shape_taylor(cache->coef[k], t, &value, &derivative);
+        phi[k] = value;
+        slope[k] = slope_scale * derivative;
+    }
+}
 
 /* Marks the cache empty: the next use expands it. */
 void bs_shape_forget(bs_shape_cache *cache);

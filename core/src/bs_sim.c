@@ -6,10 +6,10 @@
  * refused with a status, never dereferenced beyond that field.
  */
 #include "beamslider.h"
-#include "bs_beam.h"
 #include "bs_excitation.h"
 #include "bs_port.h"
 #include "bs_piezo.h"
+#include "bs_prepare.h"
 #include "bs_shape.h"
 #include "bs_sim_internal.h"
 
@@ -99,7 +99,7 @@ bs_status bs_sim_init_(uint32_t tag, size_t sim_size, size_t scene_size, bs_sim 
     bs_shape_forget(&sim->side[0]);
     bs_shape_forget(&sim->side[1]);
     sim->shape_reach = bs_shape_reach(scene);
-    bs_beam_stretch_rows(scene, sim->stretch_rows);
+    bs_prepare(sim);
 #if BS_WITH_PIEZO
     sim->voltage = sim->storage_voltage = sim->power = BS_R(0.0);
     sim->energy = sim->energy_low = BS_R(0.0);
@@ -230,7 +230,7 @@ bs_real bs_sim_sensor(const bs_sim *sim)
     if (!bs_sim_is_ready(sim))
         return bs_real_nan();
     for (k = 0; k < BS_NMODES(sim->scene); ++k)
-        w += sim->scene->phi_sensor[k] * sim->q_beam[k];
+        w += sim->k.phi_sensor[k] * sim->q_beam[k];
     return w;
 }
 

@@ -8,7 +8,7 @@
  * base motion enters: no base displacement, no base velocity, so nothing
  * integrates a measured acceleration.
  * One step from (t_B, q_B, u_B) with fixed dt (docs/model.md 5), in the stages
- * of bs_sim_step below:
+ * of step() below:
  *   1. midpoint:        t_M = t_B + dt/2,  q_M = q_B + dt/2 u_B,  h_M = h(q_M, u_B, a_B)
  *   2. smooth velocity: u_free = u_B + M^-1 h_M dt
  *   3. contacts:        those with g_N(q_M) < 0;  c = W^T u_free + diag(e_N, 0) W^T u_B,
@@ -17,7 +17,8 @@
  *   4. end of step:     q_E = q_M + dt/2 u_E,  t_E = t_B + dt; committed only if finite and
  *                       on the beam
  * The smooth part is explicit (leapfrog): stable while omega_max dt < 2, with
- * omega_max including the cubic stiffening (checked every step).
+ * omega_max including the cubic stiffening (checked every step, in O(1) when
+ * far from the limit: core/src/bs_beam.c).
  *
  * Linearly implicit variant (scene->implicit; theta in [1/2, 1]): the modal
  * stiffness K and damping C act on the end-of-step state (Moreau-Jean theta
@@ -36,6 +37,13 @@
  * x_C moves by a few ulps of float per step; it is accumulated as an unevaluated
  * sum x_C + x_c_low (Knuth's TwoSum) so that float rounding does not bias the
  * slow drift (docs/model.md 9.2).
+ *
+ * The step's cost should be its arithmetic (docs/design.md 4): the constants
+ * come prepared in the sim (bs_prepare.c: pre-multiplied by dt, in RAM), the
+ * state of the step is one local struct that the stages share and nothing
+ * else writes until the commit, the contact rows are products of two shape
+ * vectors formed once (bs_contact.c), one and two contacts are solved in
+ * closed form (bs_pgs.c), and only what changed is written back.
  *
  * Features a compiled scene leaves out (bs_config.h) drop out here: gravity,
  * restitution (no pre-step velocities needed), rotation (beta stays 0), PCS.
@@ -75,57 +83,74 @@ static void add_compensated(bs_real *sum, bs_real *low, bs_real increment)
  * velocities; BS_E_UNSTABLE if the explicit stiffness exceeds its limit. */
 static bs_status smooth_part(const bs_sim *sim, step_state *s)
 {
-    const bs_scene *scene = sim->scene;
-    const int n = BS_NMODES(scene);
-    const bs_real dt = scene->dt;
-    const bs_real half = BS_R(0.5) * dt;
-    bs_real force[BS_MAX_MODES];
-    bs_real stiffness;
-    int k;
+    const bs_step_constants *k = &sim->k;
+    const int n = BS_NMODES(sim->scene);
+    const bs_real half = k->half_dt;
+    const bs_real a = s->base_accel;
+    bs_real sq[BS_MAX_MODES];  /* S' q_M (bs_beam.h) */
+    bs_real energy = BS_R(0.0); /* E' = q_M^T S' q_M */
+    bs_real piezo = BS_R(0.0);  /* dt theta_k v per unit theta_k */
+    bs_real extra = BS_R(0.0);  /* the open patch's stiffness */
+    int i;
 
-    for (k = 0; k < n; ++k)
-        s->q[k] = sim->q_beam[k] + half * sim->u_beam[k];
-    for (k = 0; k < 3; ++k)
-        s->slider[k] = sim->slider[k] + half * sim->slider_velocity[k];
-#if BS_WITH_IMPLICIT
-    if (scene->implicit) {
-        /* linear stiffness at q + theta dt u (theta = 1/2: the midpoint); the
-         * explicit remainder is the cubic term alone */
-        bs_real q_stiff[BS_MAX_MODES];
-        for (k = 0; k < n; ++k)
-            q_stiff[k] = sim->q_beam[k] + scene->theta * dt * sim->u_beam[k];
-        stiffness = bs_beam_force(scene, sim->stretch_rows, s->q, q_stiff, sim->u_beam, s->base_accel, 0, force);
-    } else
+    for (i = 0; i < n; ++i)
+        s->q[i] = sim->q_beam[i] + half * sim->u_beam[i];
+    for (i = 0; i < 3; ++i)
+        s->slider[i] = sim->slider[i] + half * sim->slider_velocity[i];
+#if BS_WITH_STRETCHING
+    energy = bs_beam_stretch(k, n, s->q, sq);
+#else
+    for (i = 0; i < n; ++i)
+        sq[i] = BS_R(0.0);
 #endif
-        stiffness = bs_beam_force(scene, sim->stretch_rows, s->q, s->q, sim->u_beam, s->base_accel, 1, force);
 #if BS_WITH_PIEZO
-    if (scene->load != BS_LOAD_NONE) { /* the patch to the midpoint; the beam feels its voltage there */
+    if (sim->scene->load != BS_LOAD_NONE) { /* the patch to the midpoint; the beam feels its voltage there */
         s->voltage = sim->voltage;
         s->storage = sim->storage_voltage;
-        bs_piezo_half_step(scene, bs_piezo_current(scene, sim->u_beam), &s->voltage, &s->storage);
-        s->power = bs_piezo_power(scene, s->voltage, s->storage);
-        for (k = 0; k < n; ++k)
-            force[k] -= scene->piezo_theta[k] * s->voltage;
-        stiffness += sim->piezo_stiffness;
+        bs_piezo_half_step(sim->scene, bs_piezo_current(sim->scene, sim->u_beam), &s->voltage, &s->storage);
+        s->power = bs_piezo_power(sim->scene, s->voltage, s->storage);
+        piezo = k->dt * s->voltage;
+        extra = sim->piezo_stiffness;
     }
 #endif
-    if (!(stiffness * dt * dt < BS_R(4.0)))
-        return BS_E_UNSTABLE;
-
-    for (k = 0; k < n; ++k)
 #if BS_WITH_IMPLICIT
-        s->u_beam[k] = sim->u_beam[k] + dt * scene->mode_gain[k] * force[k];
-#else
-        s->u_beam[k] = sim->u_beam[k] + dt * force[k];
+    if (sim->scene->implicit) {
+        /* linear stiffness at q_B + theta dt u_B; the explicit remainder is the cubic term alone */
+        const bs_scene *scene = sim->scene;
+#if BS_WITH_STRETCHING
+        if (!(energy >= BS_R(0.0) && energy < k->stretch_limit) && !bs_beam_stable(k, n, 0, sq, energy, extra))
+            return BS_E_UNSTABLE;
 #endif
-    for (k = 0; k < 3; ++k)
-        s->u_slider[k] = sim->slider_velocity[k];
+        for (i = 0; i < n; ++i) {
+            const bs_real q_stiff = sim->q_beam[i] + scene->theta * k->dt * sim->u_beam[i];
+            s->u_beam[i] = sim->u_beam[i] + scene->mode_gain[i] * (-k->dt_gamma[i] * a - k->dt_omega_sq[i] * q_stiff
+                                                                    - k->dt_damping[i] * sim->u_beam[i]
+                                                                    - energy * sq[i] - piezo * scene->piezo_theta[i]);
+        }
+    } else
+#endif
+    {
+#if BS_WITH_STRETCHING
+        if (!(energy >= BS_R(0.0) && energy < k->stretch_limit) && !bs_beam_stable(k, n, k->dt_omega_sq, sq, energy, extra))
+            return BS_E_UNSTABLE;
+#endif
+        for (i = 0; i < n; ++i) {
+            s->u_beam[i] = (BS_GAMMA_USED(i) ? sim->u_beam[i] - k->dt_gamma[i] * a : sim->u_beam[i])
+                           - k->dt_omega_sq[i] * s->q[i] - k->dt_damping[i] * sim->u_beam[i] - energy * sq[i];
+#if BS_WITH_PIEZO
+            s->u_beam[i] -= piezo * sim->scene->piezo_theta[i];
+#endif
+        }
+    }
+    (void)piezo;
+    (void)extra;
+    for (i = 0; i < 3; ++i)
+        s->u_slider[i] = sim->slider_velocity[i];
 #if BS_WITH_GRAVITY
-    s->u_slider[0] += dt * scene->gravity[0];
-    s->u_slider[1] += dt * (scene->gravity[1] - s->base_accel);
-#else
-    s->u_slider[1] -= dt * s->base_accel; /* the base frame's inertial force */
+    s->u_slider[0] += k->dt_gravity[0];
+    s->u_slider[1] += k->dt_gravity[1];
 #endif
+    s->u_slider[1] -= k->dt * a; /* the base frame's inertial force */
     return BS_OK;
 }
 
@@ -142,91 +167,96 @@ static bs_status find_contacts(bs_sim *sim, step_state *s)
     frame.stops = sim->model == BS_MODEL_FREE;
     frame.cache = sim->side;
     frame.reach = sim->shape_reach;
-    return bs_contact_detect(sim->scene, &frame, &sim->contacts);
+    return bs_contact_detect(sim->scene, &sim->k, &frame, &sim->contacts);
 }
 
 /* 3b: the contact problem, warm-started from the last step's percussions;
  * adds M^-1 W P to the free velocities. */
 static void solve_contacts(bs_sim *sim, step_state *s, bs_step_report *report)
 {
-    const bs_scene *scene = sim->scene;
     bs_contact_set *set = &sim->contacts;
     int a, r;
 
-    bs_contact_free_velocity(scene, set, s->u_beam, s->u_slider, sim->u_beam, sim->slider_velocity);
+    bs_contact_problem(sim->scene, &sim->k, set, s->u_beam, s->u_slider, sim->u_beam, sim->slider_velocity);
     for (a = 0; a < set->count; ++a)
         for (r = 0; r < BS_ROWS; ++r)
             set->percussion[BS_ROWS * a + r] = sim->percussion[set->id[a]][r];
-    bs_contact_delassus(scene, set);
     bs_pgs_solve(set, &sim->solver, report);
-    bs_contact_apply(scene, set, s->u_beam, s->u_slider);
+    bs_contact_apply(sim->scene, &sim->k, set, s->u_beam, s->u_slider);
 }
 
 /* 4: the end-of-step configuration; BS_E_NONFINITE or BS_E_ESCAPED if it
  * must not be committed. */
 static bs_status end_of_step(const bs_sim *sim, step_state *s)
 {
-    const bs_scene *scene = sim->scene;
-    const int n = BS_NMODES(scene);
-    const bs_real dt = scene->dt;
-    const bs_real half = BS_R(0.5) * dt;
+    const bs_step_constants *k = &sim->k;
+    const int n = BS_NMODES(sim->scene);
+    const bs_real half = k->half_dt;
     bs_real check = BS_R(0.0);
-    int k;
+    int i;
 
-    for (k = 0; k < n; ++k) {
 #if BS_WITH_IMPLICIT
-        if (scene->implicit) /* q_E = q_B + dt ((1 - theta) u_B + theta u_E) */
-            s->q[k] = sim->q_beam[k] + dt * ((BS_R(1.0) - scene->theta) * sim->u_beam[k] + scene->theta * s->u_beam[k]);
-        else
+    if (sim->scene->implicit) { /* q_E = q_B + dt ((1 - theta) u_B + theta u_E) */
+        const bs_real theta = sim->scene->theta;
+        for (i = 0; i < n; ++i) {
+            s->q[i] = sim->q_beam[i] + k->dt * ((BS_R(1.0) - theta) * sim->u_beam[i] + theta * s->u_beam[i]);
+            check += s->q[i] + s->u_beam[i];
+        }
+    } else
 #endif
-            s->q[k] += half * s->u_beam[k];
-        check += s->q[k] + s->u_beam[k];
-    }
+        for (i = 0; i < n; ++i) {
+            s->q[i] += half * s->u_beam[i];
+            check += s->q[i] + s->u_beam[i];
+        }
     s->x_end = sim->slider[0];
     s->x_end_low = sim->x_c_low;
     add_compensated(&s->x_end, &s->x_end_low, half * (sim->slider_velocity[0] + s->u_slider[0]));
     s->slider[1] += half * s->u_slider[1];
     s->slider[2] += half * s->u_slider[2];
 #if BS_WITH_PIEZO
-    if (scene->load != BS_LOAD_NONE) { /* the patch on to the end, driven by the end velocities */
-        bs_piezo_half_step(scene, bs_piezo_current(scene, s->u_beam), &s->voltage, &s->storage);
+    if (sim->scene->load != BS_LOAD_NONE) { /* the patch on to the end, driven by the end velocities */
+        bs_piezo_half_step(sim->scene, bs_piezo_current(sim->scene, s->u_beam), &s->voltage, &s->storage);
         check += s->voltage + s->storage;
     }
 #endif
     check += s->x_end + s->slider[1] + s->slider[2] + s->u_slider[0] + s->u_slider[1] + s->u_slider[2];
     if (check - check != BS_R(0.0))
         return BS_E_NONFINITE;
-    if (sim->model == BS_MODEL_FREE && !bs_within_stops(scene, s->x_end))
+    if (sim->model == BS_MODEL_FREE && !bs_within_stops(sim->scene, s->x_end))
         return BS_E_ESCAPED;
     return BS_OK;
 }
 
-/* The step's result becomes the sim's state. */
+/* The step's result becomes the sim's state. The warm starts: the slots of
+ * the contacts of the last step that are not active now are cleared, the
+ * active ones written; the others are 0 already. */
 static void commit(bs_sim *sim, const step_state *s, const bs_step_report *report)
 {
     const int n = BS_NMODES(sim->scene);
-    unsigned active = 0;
-    int a, k, r;
+    const bs_contact_set *set = &sim->contacts;
+    unsigned active = 0, gone;
+    int a, i, r;
 
-    for (k = 0; k < n; ++k) {
-        sim->q_beam[k] = s->q[k];
-        sim->u_beam[k] = s->u_beam[k];
+    for (i = 0; i < n; ++i) {
+        sim->q_beam[i] = s->q[i];
+        sim->u_beam[i] = s->u_beam[i];
     }
     sim->slider[0] = s->x_end;
     sim->x_c_low = s->x_end_low;
     sim->slider[1] = s->slider[1];
     sim->slider[2] = s->slider[2];
-    for (k = 0; k < 3; ++k)
-        sim->slider_velocity[k] = s->u_slider[k];
-    for (k = 0; k < BS_MAX_CONTACTS; ++k)
-        for (r = 0; r < BS_ROWS; ++r)
-            sim->percussion[k][r] = BS_R(0.0);
-    for (a = 0; a < sim->contacts.count; ++a) {
-        const int id = sim->contacts.id[a];
+    for (i = 0; i < 3; ++i)
+        sim->slider_velocity[i] = s->u_slider[i];
+    for (a = 0; a < set->count; ++a) {
+        const int id = set->id[a];
         active |= 1u << id;
         for (r = 0; r < BS_ROWS; ++r)
-            sim->percussion[id][r] = sim->contacts.percussion[BS_ROWS * a + r];
+            sim->percussion[id][r] = set->percussion[BS_ROWS * a + r];
     }
+    for (gone = sim->report.active & ~active, i = 0; gone; gone >>= 1, ++i)
+        if (gone & 1u)
+            for (r = 0; r < BS_ROWS; ++r)
+                sim->percussion[i][r] = BS_R(0.0);
     sim->report.active = active; /* member by member: no memcpy in the core */
     sim->report.sweeps = report->sweeps;
     sim->report.systems = report->systems;
@@ -238,7 +268,7 @@ static void commit(bs_sim *sim, const step_state *s, const bs_step_report *repor
         sim->voltage = s->voltage;
         sim->storage_voltage = s->storage;
         sim->power = s->power;
-        add_compensated(&sim->energy, &sim->energy_low, s->power * sim->scene->dt);
+        add_compensated(&sim->energy, &sim->energy_low, s->power * sim->k.dt);
     }
 #endif
     sim->step += 1;

@@ -155,6 +155,26 @@ static void append_initialiser(text *out, const scene_data *as_float, const scen
 
 /* The run and solver settings (always), then the sizes and switches of a
  * build compiled against the scene (only ahead of bs_scene, see above). */
+/* Which entries of S and gamma are not 0, as bit masks (bit N i + j of S_ij,
+ * bit k of gamma_k) for scenes of up to 8 modes: the core compiled against
+ * the scene skips the zeros (fig6: 12 of S's 25 entries, 2 of its 5 gamma),
+ * and bs_sim_init refuses a scene with a value where the mask has none. */
+static void append_zero_patterns(text *t, const scene_data *d)
+{
+    unsigned long long stretch = 0, gamma = 0;
+    int i, j;
+    if (d->n_modes > 8)
+        return;
+    for (i = 0; i < d->n_modes; ++i) {
+        gamma |= (unsigned long long)(d->gamma[i] != 0.0) << i;
+        for (j = 0; j < d->n_modes; ++j)
+            stretch |= (unsigned long long)(d->stretch[i][j] != 0.0) << (d->n_modes * i + j);
+    }
+    append(t, "/* entries of S and gamma that are not 0: bit N i + j of S_ij, bit k of gamma_k */\n");
+    append(t, "#define BS_SCENE_STRETCH_USED UINT64_C(0x%llx)\n#define BS_SCENE_GAMMA_USED UINT64_C(0x%llx)\n",
+           stretch, gamma);
+}
+
 static void append_switches(text *t, const scene_params *p, const scene_model *model,
                             const shape_fit fits[2], const char *guard)
 {
@@ -190,6 +210,7 @@ static void append_switches(text *t, const scene_params *p, const scene_model *m
     append(t, "#define BS_WITH_PCS %d\n", p->model == BS_MODEL_PCS);
     append(t, "#define BS_WITH_IMPLICIT %d\n", d->implicit);
     append(t, "#define BS_WITH_PIEZO %d\n", d->load != BS_LOAD_NONE);
+    append_zero_patterns(t, d);
     append(t, "#endif\n#endif\n\n");
 }
 

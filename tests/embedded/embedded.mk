@@ -84,6 +84,14 @@ $(foreach w,$(EMB_WHOLE),$(call emb_image,whole-$(call emb_word,$w,2)-$(call emb
     $(call emb_word,$w,2),$(call emb_word,$w,3),BS_SCENE_STEPS,subspace,$(emb_whole_flags)))
 $(foreach s,$(EMB_WHOLE_RAM),$(call emb_image,whole-$s-float-ram,cortex-m4f,$s,float,BS_SCENE_STEPS,subspace,\
     $(emb_whole_flags) $(EMB_RAM_FLAGS)))
+# ... and M4F float images counting 50 000 steps from 20 s into the scene's
+# run (the high branch, most steps with two contacts), flash and ram: a quick
+# probe of the cost where the whole runs spend it
+EMB_MID_SCENES := fig6 fig6_1mode
+emb_mid_flags := -DBS_RUN_COST=1 -DBS_RUN_SKIP=1000000 -DBS_RUN_TIGHT_STEPS=0
+$(foreach s,$(EMB_MID_SCENES),$(call emb_image,mid-$s-float,cortex-m4f,$s,float,50000,subspace,$(emb_mid_flags)))
+$(foreach s,$(EMB_MID_SCENES),$(call emb_image,mid-$s-float-ram,cortex-m4f,$s,float,50000,subspace,\
+    $(emb_mid_flags) $(EMB_RAM_FLAGS)))
 $(foreach c,$(EMB_O2),$(call emb_image,cost-$(call emb_word,$c,1)-float-$(call emb_word,$c,2)-O2,cortex-m4f,\
     $(call emb_word,$c,1),float,20000,$(call emb_word,$c,2),-DBS_RUN_COST=1 -O2))
 
