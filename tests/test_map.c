@@ -2,15 +2,18 @@
  * files (host/lib/map_grid.c, map_case.c, map_store.c, map_table.c). The
  * whole command (workers, resume after a kill, shards, refusals) is checked
  * by tests/check_map.sh. Run from the repository root. */
-#define _POSIX_C_SOURCE 200809L
+#define _GNU_SOURCE /* RTLD_NEXT */
 
 #include "support.h"
 
 #include <dirent.h>
+#include <dlfcn.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "map_case.h"
@@ -320,6 +323,117 @@ static void test_a_folder_holds_one_map_only(void **state)
     unlink(sub);
 }
 
+/* ---- shards started together ----
+ * Shards started at once race to make the folder and its identity. Here
+ * another shard's whole start (its claim, then its result file) is made to
+ * happen just before the n-th folder call of this process's claim, for every
+ * n: the functions below stand in for the C library's (a definition in the
+ * program comes before the library's) and run that start in a child (another
+ * process id, as a shard has) when the count comes. Every claim must
+ * succeed, whatever call it is overtaken at. */
+static int race_at;                /* the call to be overtaken at (0: none) */
+static int race_calls;             /* calls seen since race_at was set */
+static int race_failed;            /* the other shard's start failed */
+static char race_dir[128];
+static const char *race_identity;
+static const map_grid *race_grid;
+
+static void race_point(void)
+{
+    pid_t pid;
+    int status;
+    if (!race_at || ++race_calls != race_at)
+        return;
+    pid = fork();
+    if (pid == 0) {
+        char why[2048], path[4400];
+        int fd = -1;
+        race_at = 0;
+        if (map_dir_claim(race_dir, race_identity, why, sizeof why) != 0
+            || (fd = map_results_create(race_dir, race_grid, path, sizeof path, why, sizeof why)) < 0)
+            fprintf(stderr, "the other shard: %s\n", why);
+        _exit(fd < 0);
+    }
+    race_failed |= pid < 0 || waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0;
+}
+
+/* The C library's function name, found behind this program's. */
+static void *next_function(const char *name)
+{
+    void *real = dlsym(RTLD_NEXT, name);
+    if (!real)
+        abort();
+    return real;
+}
+
+int mkdir(const char *path, mode_t mode)
+{
+    int (*real)(const char *, mode_t);
+    *(void **)&real = next_function("mkdir");
+    race_point();
+    return real(path, mode);
+}
+
+int access(const char *path, int mode)
+{
+    int (*real)(const char *, int);
+    *(void **)&real = next_function("access");
+    race_point();
+    return real(path, mode);
+}
+
+DIR *opendir(const char *path)
+{
+    DIR *(*real)(const char *);
+    *(void **)&real = next_function("opendir");
+    race_point();
+    return real(path);
+}
+
+int link(const char *from, const char *to)
+{
+    int (*real)(const char *, const char *);
+    *(void **)&real = next_function("link");
+    race_point();
+    return real(from, to);
+}
+
+static void test_claims_overtaken_at_any_point_succeed(void **state)
+{
+    static const char *const specs[] = { "excitation.frequency=120,122", NULL };
+    map_grid grid;
+    char *identity;
+    int made, n, claimed;
+    (void)state;
+    load_base();
+    grid_of(&grid, specs, 1);
+    identity = map_identity_text(&grid, &base, "configs/fig6.ini", "beamslider map ...");
+    assert_non_null(identity);
+    snprintf(race_dir, sizeof race_dir, "%s/race", dir);
+    race_identity = identity;
+    race_grid = &grid;
+    for (made = 0; made < 2; ++made) /* the folder absent, or just made by another shard */
+        for (n = 1;; ++n) {
+            if (made)
+                assert_int_equal(mkdir(race_dir, 0777), 0);
+            race_at = n;
+            race_calls = 0;
+            race_failed = 0;
+            claimed = map_dir_claim(race_dir, identity, err, sizeof err);
+            race_at = 0;
+            if (claimed != 0 || race_failed)
+                print_error("%s, overtaken at folder call %d: %s\n", made ? "the folder made" : "no folder", n,
+                            claimed ? err : "the other shard failed");
+            assert_int_equal(claimed, 0);
+            assert_false(race_failed);
+            remove_dir(race_dir);
+            if (race_calls < n) /* the claim made fewer calls: each was overtaken once */
+                break;
+        }
+    free(identity);
+    map_grid_free(&grid);
+}
+
 /* Rows spread over result files in any way, with torn and foreign lines,
  * merge into the same table. */
 static void test_result_files_merge_whole_rows_only(void **state)
@@ -402,6 +516,7 @@ int main(void)
         cmocka_unit_test(test_rows_carry_a_check_that_finds_damage),
         cmocka_unit_test(test_a_folder_holds_one_map_only),
         cmocka_unit_test(test_result_files_merge_whole_rows_only),
+        cmocka_unit_test(test_claims_overtaken_at_any_point_succeed),
     };
     return cmocka_run_group_tests(tests, make_dir, drop_dir);
 }

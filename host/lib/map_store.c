@@ -284,41 +284,59 @@ static int publish_identity(const char *dir, const char *identity, char *err, si
     return status;
 }
 
+/* Makes dir, or finds it a folder; *created = 1 if this call made it. 0 or
+ * -1 with err. */
+static int make_folder(const char *dir, int *created, char *err, size_t size)
+{
+    struct stat info;
+
+    *created = mkdir(dir, 0777) == 0;
+    if (*created)
+        return 0;
+    if (errno != EEXIST) { /* EEXIST: there already, or another shard made it just now */
+        snprintf(err, size, "--out %s: cannot create the folder: %s", dir, strerror(errno));
+        return -1;
+    }
+    if (stat(dir, &info) != 0 || !S_ISDIR(info.st_mode)) {
+        snprintf(err, size, "--out %s: not a folder", dir);
+        return -1;
+    }
+    return 0;
+}
+
+/* Shards started together race here, so every step allows for another
+ * process having done any of its own since the last look: the folder made
+ * (EEXIST is success), the identity linked (EEXIST: compare with it), and
+ * files beside the identity. A map command makes other files only after the
+ * identity is in place, so a folder that holds files is refused as not a
+ * map's only if it still has no identity after they were seen. */
 int map_dir_claim(const char *dir, const char *identity, char *err, size_t size)
 {
     char path[4200];
-    struct stat info;
     char *there;
-    int created = 0, status;
+    int created, status;
 
     if (strlen(dir) > 4000) {
         snprintf(err, size, "--out %.40s...: path too long", dir);
         return -1;
     }
-    if (stat(dir, &info) != 0) {
-        /* EEXIST: another shard made it just now */
-        if (errno != ENOENT || (mkdir(dir, 0777) != 0 && errno != EEXIST)) {
-            snprintf(err, size, "--out %s: cannot create the folder: %s", dir, strerror(errno));
-            return -1;
-        }
-        created = 1;
-    } else if (!S_ISDIR(info.st_mode)) {
-        snprintf(err, size, "--out %s: not a folder", dir);
+    if (make_folder(dir, &created, err, size) != 0)
         return -1;
-    }
     snprintf(path, sizeof path, "%s/" MAP_IDENTITY_FILE, dir);
     if (access(path, F_OK) != 0) {
-        if (!created && !folder_is_empty(dir)) {
+        if (!created && !folder_is_empty(dir) && access(path, F_OK) != 0) {
             snprintf(err, size, "--out %s: the folder holds files but no " MAP_IDENTITY_FILE ": not a map's "
                      "folder (use a new or an empty folder)", dir);
             return -1;
         }
         status = publish_identity(dir, identity, err, size);
-        if (status <= 0) {
-            if (status < 0 && created)
+        if (status < 0) {
+            if (created)
                 rmdir(dir);
-            return status;
+            return -1;
         }
+        if (status == 0)
+            return 0;
     }
     there = read_all(path);
     if (!there) {
