@@ -29,6 +29,7 @@
 #include "bs_platform.h"
 #include "cli.h"
 #include "observer_design.h"
+#include "out_c.h"
 #include "scene_build.h"
 
 #define MAX_SETS 16
@@ -152,7 +153,14 @@ static int parse_valued(twin_cli *c, const char *option, const char *value)
     double x;
     if (!strcmp(option, "--out")) c->out_path = value;
     else if (!strcmp(option, "--measured")) c->measured_path = value;
-    else if (!strcmp(option, "--name")) c->name = value;
+    else if (!strcmp(option, "--name")) {
+        char err[512];
+        if (out_c_identifier_check(value, option, err, sizeof err) != 0) {
+            cli_error("%s", err);
+            return -1;
+        }
+        c->name = value;
+    }
     else if (!strcmp(option, "--signal")) {
         if (parse_signal(value, &c->signal) != 0) {
             cli_error("--signal %s: allowed: deflection, voltage", value);
