@@ -98,6 +98,74 @@ done
 check_status "twin-gains --name gains_fig6 exits 0" 0 $? "$tmp/e"
 check_has "... and declares it" "$tmp/o" "static const bs_observer_gains gains_fig6 = {"
 
+# ---- JSON: every command's summary, read by a strict parser (one line,
+# UTF-8, no NaN or Infinity), with the name as given and null for a number
+# that is not finite
+cat >"$tmp/json_check.py" <<'EOF'
+import json, sys
+def constant(name):
+    raise ValueError("not JSON: " + name)
+text = open(sys.argv[1], "rb").read().decode("utf-8")
+lines = text.split("\n")
+if len(lines) != 2 or lines[1] != "":
+    sys.exit("not one line: %r" % text[:300])
+summary = json.loads(lines[0], parse_constant=constant)
+for pair in sys.argv[2:]:
+    key, want = pair.split("=", 1)
+    if key not in summary or summary[key] != json.loads(want):
+        sys.exit("%s: %r, expected %s" % (key, summary.get(key, "(none)"), want))
+EOF
+json_check() { # json_check DESCRIPTION FILE [KEY=JSON ...]: FILE is one JSON line with those members
+    description=$1
+    file=$2
+    shift 2
+    if report=$(python3 "$tmp/json_check.py" "$file" "$@" 2>&1); then
+        pass "$description"
+    else
+        fail "$description" "$report; $(head -c 400 "$file")"
+    fi
+}
+json_text() { python3 -c 'import json, sys; print(json.dumps(sys.argv[1]))' "$1"; }
+jname=$(json_text "$name")
+
+"$bin" run "$tmp/hostile.ini" >"$tmp/o" 2>"$tmp/e"
+check_status "run of the hostile scene exits 0" 0 $? "$tmp/e"
+json_check "run: the summary is JSON with the name as given" "$tmp/o" "scene=$jname"
+"$bin" sweep "$tmp/hostile.ini" --dir up --out "$tmp/sweep.csv" --from 0.29 --to 0.3 --step 0.01 --hold 1 \
+    --record 1 >"$tmp/o" 2>"$tmp/e"
+check_status "sweep of the hostile scene exits 0" 0 $? "$tmp/e"
+json_check "sweep: the summary is JSON with the name as given" "$tmp/o" "scene=$jname"
+# a folder whose name holds a quote and a byte that is no UTF-8 (Latin-1)
+dir="$tmp/map \"$(printf '\377')"
+"$bin" map "$tmp/hostile.ini" --vary excitation.frequency=120,124 --jobs 1 --out "$dir" >"$tmp/o" 2>"$tmp/e"
+check_status "map of the hostile scene exits 0" 0 $? "$tmp/e"
+json_check "map: the summary is JSON (the folder's byte 0xff as U+FFFD)" "$tmp/o" "scene=$jname" \
+    "out=$(json_text "$tmp/map \"$(printf '\357\277\275')")" complete=true
+"$bin" map-merge "$dir" >"$tmp/o" 2>"$tmp/e"
+check_status "map-merge of it exits 0" 0 $? "$tmp/e"
+json_check "map-merge: the summary is JSON with the name as given" "$tmp/o" "scene=$jname" \
+    'command="map-merge"' cases=2 complete=true
+"$bin" twin-plant "$tmp/hostile.ini" --snr 40 --out "$tmp/plant.csv" >"$tmp/o" 2>"$tmp/e"
+check_status "twin-plant of the hostile scene exits 0" 0 $? "$tmp/e"
+json_check "twin-plant: the summary is JSON with the name as given" "$tmp/o" "plant=$jname" steps=100
+"$bin" twin "$tmp/hostile.ini" --measured "$tmp/plant.csv" --out "$tmp/est.csv" --score-after 100 \
+    >"$tmp/o" 2>"$tmp/e"
+check_status "twin on it exits 0" 0 $? "$tmp/e"
+json_check "twin: the summary is JSON, nothing scored is null" "$tmp/o" "scene=$jname" within=null rms_s_error=null
+"$bin" twin-plant "$tmp/hostile.ini" --t-end 1e-9 --out "$tmp/plant0.csv" >"$tmp/o" 2>"$tmp/e"
+if [ $? -eq 2 ]; then # a run of no step may be refused as such
+    pass "twin-plant of no step is refused"
+else
+    json_check "twin-plant of no step: the summary is JSON, its NaN RMS null" "$tmp/o" signal_rms=null
+fi
+# a name with a line break in a line-based file: one line still
+hostile "$tmp/twoline.ini"
+cp "$tmp/twoline.ini" "$tmp/two${nl}# sample_rate = 1 Hz.ini"
+sed -i '/^name = /d' "$tmp/two${nl}# sample_rate = 1 Hz.ini"
+"$bin" twin-plant "$tmp/two${nl}# sample_rate = 1 Hz.ini" --out "$tmp/plant2.csv" >"$tmp/o" 2>"$tmp/e"
+check_status "twin-plant of a scene named with a line break exits 0" 0 $? "$tmp/e"
+check "... and forges no header line" test "$(grep -c '^# sample_rate' "$tmp/plant2.csv")" -eq 1
+
 check "nothing ran: no PWNED file" test ! -e PWNED -a ! -e "$tmp/PWNED"
 echo "check_outputs: $passed passed, $failed failed ($bin)"
 [ "$failed" -eq 0 ]

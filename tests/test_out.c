@@ -1,5 +1,5 @@
 /* test_out.c - the writers of text that leaves the program in another
- * language (host/lib/out_c.c). Each is fed the texts that broke out of the
+ * language (host/lib/out_c.c, out_json.c, out_text.c). Each is fed the texts that broke out of the
  * old ad-hoc quoting (a quote, a backslash, a backquote, an @, a comment's
  * end, a line break, every byte) and must give back, when the result is read
  * as its language reads it, the text as given and nothing else.
@@ -15,6 +15,8 @@
 #include <string.h>
 
 #include "out_c.h"
+#include "out_json.h"
+#include "out_text.h"
 
 /* Texts an attacker would try, and every byte 1..255 in one. */
 static const char *const hostile[] = {
@@ -209,6 +211,134 @@ static void test_c_reals_are_floating_literals(void **state)
     assert_int_equal(out_c_real(text, (double)INFINITY), -1);
 }
 
+/* ---- JSON ---- */
+
+/* The line out_json_finish prints for j, malloc'd. */
+static char *finished(out_json *j)
+{
+    char *data = NULL;
+    size_t size = 0;
+    FILE *out = open_memstream(&data, &size);
+    assert_non_null(out);
+    assert_int_equal(out_json_finish(j, out), 0);
+    assert_int_equal(fclose(out), 0);
+    return data;
+}
+
+static void test_json_numbers_not_finite_are_null(void **state)
+{
+    out_json j;
+    char *line;
+    (void)state;
+    out_json_start(&j);
+    out_json_number(&j, "nan", "%.6g", (double)NAN);
+    out_json_number(&j, "inf", "%.6f", (double)INFINITY);
+    out_json_number(&j, "minus_inf", "%g", -(double)INFINITY);
+    out_json_number(&j, "x", "%.6f", 0.5);
+    out_json_number(&j, "huge", "%f", 1e300); /* 300 digits: cJSON's own text instead */
+    out_json_number(&j, "hex", "%a", 0.5);    /* not JSON's grammar: cJSON's own text */
+    out_json_int(&j, "n", -3);
+    out_json_count(&j, "c", 18446744073709551615ull);
+    out_json_bool(&j, "b", 1);
+    out_json_open(&j, "set");
+    out_json_number_text(&j, "a.b", "1e-05");
+    out_json_number_text(&j, "c.d", "nan");
+    out_json_close(&j);
+    out_json_text(&j, "after", "root");
+    line = finished(&j);
+    assert_string_equal(line, "{\"nan\":null,\"inf\":null,\"minus_inf\":null,\"x\":0.500000,\"huge\":1e+300,"
+                              "\"hex\":0.5,\"n\":-3,\"c\":18446744073709551615,\"b\":true,"
+                              "\"set\":{\"a.b\":1e-05,\"c.d\":\"nan\"},\"after\":\"root\"}\n");
+    free(line);
+}
+
+static void test_json_number_grammar(void **state)
+{
+    static const char *const good[] = { "0", "-0", "0.5", "-12.25", "1e+300", "1.0E-5", "4.9e-324", "120", NULL };
+    static const char *const bad[] = { "", "nan", "-nan", "inf", "-inf", "01", "1.", ".5", "+1", "0x10", "1e",
+                                       "1e+", "1,5", " 1", "1 ", "--1", NULL };
+    int i;
+    (void)state;
+    for (i = 0; good[i]; ++i)
+        if (!out_json_is_number(good[i])) {
+            print_error("%s refused\n", good[i]);
+            fail();
+        }
+    for (i = 0; bad[i]; ++i)
+        if (out_json_is_number(bad[i])) {
+            print_error("%s taken for a number\n", bad[i]);
+            fail();
+        }
+}
+
+/* Every text reads back as given (a parser's view), invalid UTF-8 bytes as U+FFFD. */
+static void test_json_texts_read_back_as_given_and_utf8(void **state)
+{
+    static const char *const valid[] = { "q\"b\\c", "line\nbreak\ttab\x01\x7f", "caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80",
+                                         "m`touch PWNED`x @m $x '", NULL };
+    out_json j;
+    cJSON *parsed;
+    char *line;
+    size_t i;
+    (void)state;
+    for (i = 0; valid[i]; ++i) {
+        out_json_start(&j);
+        out_json_text(&j, "scene", valid[i]);
+        line = finished(&j);
+        parsed = cJSON_Parse(line);
+        assert_non_null(parsed);
+        assert_string_equal(cJSON_GetObjectItem(parsed, "scene")->valuestring, valid[i]);
+        cJSON_Delete(parsed);
+        free(line);
+    }
+    fill_every_byte();
+    out_json_start(&j);
+    out_json_text(&j, "scene", every_byte);
+    line = finished(&j);
+    for (i = 0; line[i]; i += out_text_utf8_length(line + i))
+        if (out_text_utf8_length(line + i) == 0) {
+            print_error("byte %zu (0x%02x) of the line is no UTF-8\n", i, (unsigned)(unsigned char)line[i]);
+            fail();
+        }
+    parsed = cJSON_Parse(line);
+    assert_non_null(parsed);
+    {
+        const char *text = cJSON_GetObjectItem(parsed, "scene")->valuestring;
+        assert_int_equal(memcmp(text, every_byte, 127), 0); /* ASCII as it was */
+        assert_int_equal(strlen(text), 127 + 128 * 3);      /* each byte 0x80..0xff alone: U+FFFD */
+    }
+    cJSON_Delete(parsed);
+    free(line);
+}
+
+/* ---- line-based files and UTF-8 ---- */
+
+static void test_utf8_characters_are_told_from_bytes(void **state)
+{
+    static const struct { const char *text; size_t length; } cases[] = {
+        { "a", 1 }, { "\xc3\xa9", 2 }, { "\xe2\x82\xac", 3 }, { "\xf0\x9f\x98\x80", 4 },
+        { "\x80", 0 }, { "\xc0\x80", 0 }, { "\xc1\xbf", 0 }, { "\xe0\x80\x80", 0 }, { "\xed\xa0\x80", 0 },
+        { "\xf0\x80\x80\x80", 0 }, { "\xf4\x90\x80\x80", 0 }, { "\xf5\x80\x80\x80", 0 }, { "\xff", 0 },
+        { "\xe2\x82", 0 }, { "\xc3", 0 }, { "\xc3" "a", 0 },
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof cases / sizeof *cases; ++i)
+        if (out_text_utf8_length(cases[i].text) != cases[i].length) {
+            print_error("case %zu: length %zu, expected %zu\n", i, out_text_utf8_length(cases[i].text),
+                        cases[i].length);
+            fail();
+        }
+}
+
+static void test_one_line_texts_have_no_control_characters(void **state)
+{
+    char text[64];
+    (void)state;
+    snprintf(text, sizeof text, "two\n# sample_rate = 1 Hz\r\t\x7f caf\xc3\xa9");
+    assert_string_equal(out_text_one_line(text), "two?# sample_rate = 1 Hz??? caf\xc3\xa9");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -217,6 +347,11 @@ int main(void)
         cmocka_unit_test(test_c_identifiers_are_checked),
         cmocka_unit_test(test_c_macro_names_are_identifiers),
         cmocka_unit_test(test_c_reals_are_floating_literals),
+        cmocka_unit_test(test_json_numbers_not_finite_are_null),
+        cmocka_unit_test(test_json_number_grammar),
+        cmocka_unit_test(test_json_texts_read_back_as_given_and_utf8),
+        cmocka_unit_test(test_utf8_characters_are_told_from_bytes),
+        cmocka_unit_test(test_one_line_texts_have_no_control_characters),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

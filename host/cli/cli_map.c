@@ -27,7 +27,8 @@ static const char map_usage[] =
     "  (one row per grid point: outcome class fractions, spread) are written. JSON summary on\n"
     "  stdout. docs/maps.md says what the columns and outcome classes mean.\n"
     "usage: beamslider map-merge DIR\n"
-    "  writes DIR/runs.csv and DIR/map.csv from the result files of every shard (all cases done)\n";
+    "  writes DIR/runs.csv and DIR/map.csv from the result files of every shard (all cases done);\n"
+    "  JSON summary on stdout (cases, done, lines ignored, complete)\n";
 
 typedef struct map_cli {
     const char *scene_path, *dir;
@@ -317,10 +318,16 @@ int cli_map_merge(int argc, char **argv)
         return CLI_USAGE;
     }
     memset(&m, 0, sizeof m);
+    m.grid = &grid;
+    m.dir = argv[0];
     status = merge(argv[0], &grid, &m, 1) == 0 ? CLI_OK : CLI_FAILED;
     if (status == CLI_OK)
         fprintf(stderr, "map-merge: wrote %s/%s and %s/%s: %ld cases (%ld torn and %ld other lines ignored)\n",
                 argv[0], MAP_RUNS_TABLE, argv[0], MAP_POINTS_TABLE, grid.cases, m.torn, m.invalid);
+    if (summary_print_merge(stdout, scene, &m) != 0) {
+        cli_error("cannot write the summary (out of memory?)");
+        status = CLI_FAILED;
+    }
     map_grid_free(&grid);
     return status;
 }

@@ -14,6 +14,7 @@
 #include <unistd.h>
 #include "bs_revision.h"
 #include "map_case.h"
+#include "out_text.h"
 #include "scene_values.h"
 
 #define IDENTITY_FORMAT 1
@@ -48,6 +49,21 @@ static void append(text *t, const char *part)
     t->used += n;
 }
 
+/* "info KEY = VALUE" with VALUE made one line (out_text.h): a name, a path
+ * or a command line may hold a line break, which would forge a line. */
+static void append_info(text *t, const char *key, const char *value)
+{
+    char *line = malloc(strlen(key) + strlen(value) + 10);
+    if (!line) {
+        t->failed = 1;
+        return;
+    }
+    sprintf(line, "info %s = %s", key, value);
+    append(t, out_text_one_line(line));
+    append(t, "\n");
+    free(line);
+}
+
 char *map_identity_text(const map_grid *grid, const scene_file *base, const char *scene_path,
                         const char *command)
 {
@@ -78,17 +94,14 @@ char *map_identity_text(const map_grid *grid, const scene_file *base, const char
         }
         append(&t, "\n");
     }
-    snprintf(line, sizeof line, "info revision = %s\ninfo scene = %s\ninfo scene_file = %s\n", BS_REVISION,
-             base->params.name, scene_path);
+    snprintf(line, sizeof line, "info revision = %s\n", BS_REVISION);
     append(&t, line);
+    append_info(&t, "scene", base->params.name);
+    append_info(&t, "scene_file", scene_path);
     for (i = 0; scene_fields[i].key; ++i)
-        if (base->set_file[i] == SCENE_BY_OPTION) {
-            snprintf(line, sizeof line, "info set = %s\n", base->set_option[i]);
-            append(&t, line);
-        }
-    append(&t, "info command = ");
-    append(&t, command);
-    append(&t, "\n");
+        if (base->set_file[i] == SCENE_BY_OPTION)
+            append_info(&t, "set", base->set_option[i]);
+    append_info(&t, "command", command);
     if (t.failed) {
         free(t.data);
         return NULL;
