@@ -174,6 +174,31 @@ else
 fi
 "$bin" map-plot "$tmp/one" --mark 150,12,far --out "$tmp/plot" >"$tmp/o" 2>"$tmp/e"
 check_status "map-plot with a mark off the map exits 2" 2 $? "$tmp/e"
+# a table cut short or edited is refused with its line, and nothing drawn
+damaged() { # damaged DESCRIPTION MESSAGE SED-SCRIPT|cut: map-plot of one's table so changed
+    rm -rf "$tmp/damaged" "$tmp"/dplot*
+    cp -r "$tmp/one" "$tmp/damaged"
+    if [ "$3" = cut ]; then
+        head -c -9 "$tmp/one/map.csv" >"$tmp/damaged/map.csv"
+    else
+        sed -i "$3" "$tmp/damaged/map.csv"
+    fi
+    "$bin" map-plot "$tmp/damaged" --out "$tmp/dplot" >"$tmp/o" 2>"$tmp/e"
+    check_status "map-plot of a table $1 exits 2" 2 $? "$tmp/e"
+    check_has "... naming the file and line" "$tmp/e" "$2"
+    check "... and writes nothing" test -z "$(ls "$tmp" | grep '^dplot')"
+}
+damaged "cut mid-line" "map.csv:7: the last line is cut short" cut
+damaged "without its last row" "map.csv: 1 of the map's 6 grid points have no row" '$d'
+damaged "with a row twice" "map.csv:4: expected the row of grid point 2" '3p'
+damaged "with a garbage row" "map.csv:3: 2 columns, the header has 24" '3s/.*/1,garbage/'
+damaged "with a column cut off" "map.csv:2: 23 columns, the header has 24" '2s/,[^,]*$//'
+damaged "with a column more" "map.csv:2: 25 columns, the header has 24" '2s/$/,1/'
+damaged "with a number out of its range" "map.csv:3: column agreement is not a fraction in [0, 1]" '3s/,other,1,/,other,2,/'
+damaged "with a number edited" "map.csv:2: column s_final_mean is not a number" '2s/,\(0\.[0-9]*\),/,`touch PWNED`,/'
+damaged "with another class" "map.csv:2: the outcome is not a class name" '2s/,other,/,another,/'
+damaged "with other values" "map.csv:2: expected excitation.frequency = 120" '2s/^0,120,/0,121,/'
+damaged "with another header" "map.csv:1: not the header of this map's table" '1s/^point/points/'
 "$bin" map-plot "$tmp/whole" --out "$tmp/plot" >"$tmp/o" 2>"$tmp/e"
 check_status "map-plot of a map of one varied field exits 2" 2 $? "$tmp/e"
 check_has "... saying it needs two" "$tmp/e" "two different varied fields"

@@ -14,6 +14,7 @@ bin=${1:-}
 . "$(dirname "$0")/check_lib.sh"
 check_setup tests/check_outputs.sh "$bin"
 include=$(dirname "$bin")/include
+bin_abs=$(cd "$(dirname "$bin")" && pwd)/$(basename "$bin") # for commands run in $tmp
 cc=${CC:-cc}
 
 # The hostile name: every way out of a C comment or string, a gnuplot string
@@ -137,14 +138,15 @@ check_status "sweep of the hostile scene exits 0" 0 $? "$tmp/e"
 json_check "sweep: the summary is JSON with the name as given" "$tmp/o" "scene=$jname"
 # a folder whose name holds a quote and a byte that is no UTF-8 (Latin-1)
 dir="$tmp/map \"$(printf '\377')"
-"$bin" map "$tmp/hostile.ini" --vary excitation.frequency=120,124 --jobs 1 --out "$dir" >"$tmp/o" 2>"$tmp/e"
+"$bin" map "$tmp/hostile.ini" --vary excitation.frequency=120,124 --vary excitation.acceleration=10,14 --jobs 1 \
+    --out "$dir" >"$tmp/o" 2>"$tmp/e"
 check_status "map of the hostile scene exits 0" 0 $? "$tmp/e"
 json_check "map: the summary is JSON (the folder's byte 0xff as U+FFFD)" "$tmp/o" "scene=$jname" \
     "out=$(json_text "$tmp/map \"$(printf '\357\277\275')")" complete=true
 "$bin" map-merge "$dir" >"$tmp/o" 2>"$tmp/e"
 check_status "map-merge of it exits 0" 0 $? "$tmp/e"
 json_check "map-merge: the summary is JSON with the name as given" "$tmp/o" "scene=$jname" \
-    'command="map-merge"' cases=2 complete=true
+    'command="map-merge"' cases=4 complete=true
 "$bin" twin-plant "$tmp/hostile.ini" --snr 40 --out "$tmp/plant.csv" >"$tmp/o" 2>"$tmp/e"
 check_status "twin-plant of the hostile scene exits 0" 0 $? "$tmp/e"
 json_check "twin-plant: the summary is JSON with the name as given" "$tmp/o" "plant=$jname" steps=100
@@ -166,6 +168,45 @@ sed -i '/^name = /d' "$tmp/two${nl}# sample_rate = 1 Hz.ini"
 check_status "twin-plant of a scene named with a line break exits 0" 0 $? "$tmp/e"
 check "... and forges no header line" test "$(grep -c '^# sample_rate' "$tmp/plant2.csv")" -eq 1
 
-check "nothing ran: no PWNED file" test ! -e PWNED -a ! -e "$tmp/PWNED"
+# ---- gnuplot: map-plot of that map (its name from the folder's identity),
+# with a hostile --title and --mark label, in a folder named with a quote
+if command -v gnuplot >/dev/null 2>&1; then
+    (cd "$tmp" && "$bin_abs" map-plot "$dir" --mark '122,12,l`touch PWNED`'"'x @m" >"$tmp/o" 2>"$tmp/e")
+    check_status "map-plot of the hostile map exits 0" 0 $? "$tmp/e"
+    check "map-plot: it draws the outcome" test -s "$dir/plot_outcome.png"
+    # gnuplot itself reads each title back: "set title X" printed as "print X"
+    title_of() { # title_of SCRIPT: the first figure's title as gnuplot reads it
+        grep '^set title ' "$1" | head -n 1 | sed 's/^set title /print /' >"$tmp/title.gp"
+        (cd "$tmp" && gnuplot "$tmp/title.gp" 2>&1)
+    }
+    printf '%s\n%s\n' "$name" "outcome class: the class most starts ended in (1 start per point)" >"$tmp/want"
+    title_of "$dir/plot.gp" >"$tmp/o"
+    check "map-plot: gnuplot reads the title as the scene's name, as given" cmp -s "$tmp/o" "$tmp/want"
+    check_has "map-plot: the label is one string" "$dir/plot.gp" "set label 1 'l\`touch PWNED\`''x @m' at "
+    (cd "$tmp" && "$bin_abs" map-plot "$dir" --title "t\`touch PWNED\`'@m \$HOME \\${nl}second" --out "$tmp/t" \
+        >"$tmp/o" 2>"$tmp/e")
+    check_status "map-plot --title with a backquote, a quote and a line break exits 0" 0 $? "$tmp/e"
+    printf '%s\n%s\n' "t\`touch PWNED\`'@m \$HOME \\?second" \
+        "outcome class: the class most starts ended in (1 start per point)" >"$tmp/want"
+    title_of "$tmp/t.gp" >"$tmp/o"
+    check "map-plot: gnuplot reads --title as given (the line break as ?)" cmp -s "$tmp/o" "$tmp/want"
+    # gnuplot away: said so, nothing written
+    (cd "$tmp" && PATH=/nonexistent "$bin_abs" map-plot "$dir" --out "$tmp/nognuplot" >"$tmp/o" 2>"$tmp/e")
+    check_status "map-plot without gnuplot exits 1" 1 $? "$tmp/e"
+    check_has "... saying gnuplot is not installed" "$tmp/e" "gnuplot is not installed (no gnuplot on PATH"
+    check "... and writes nothing" test -z "$(ls "$tmp" | grep nognuplot)"
+else
+    echo "check_outputs: map-plot not checked: gnuplot is not installed (apt-get install gnuplot-nox)"
+fi
+"$bin" map-plot "$dir" --out "$tmp/pic${nl}x" >"$tmp/o" 2>"$tmp/e"
+check_status "map-plot --out with a line break exits 2" 2 $? "$tmp/e"
+check "... and writes nothing" test -z "$(ls "$tmp" | grep "^pic")"
+# the identity edited: a control character in the name is refused with its line
+sed -i 's/^info scene = .*/info scene = x\x01y/' "$dir/map-identity.txt"
+"$bin" map-plot "$dir" --out "$tmp/edited" >"$tmp/o" 2>"$tmp/e"
+check_status "map-plot of an identity edited to hold a control character exits 2" 2 $? "$tmp/e"
+check_has "... naming the file and line" "$tmp/e" "map-identity.txt:12: a control character"
+
+check "nothing ran: no PWNED file" test ! -e PWNED -a ! -e "$tmp/PWNED" -a ! -e "$dir/PWNED"
 echo "check_outputs: $passed passed, $failed failed ($bin)"
 [ "$failed" -eq 0 ]

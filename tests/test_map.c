@@ -434,6 +434,81 @@ static void test_claims_overtaken_at_any_point_succeed(void **state)
     map_grid_free(&grid);
 }
 
+/* An identity is input when read back: every line map never writes is
+ * refused with its line; text it does write (any scene name without a line
+ * break) is taken as it is. */
+static void test_identity_read_back_refuses_what_map_never_writes(void **state)
+{
+    static const char *const specs[] = { "excitation.frequency=120,122", "run.model=free,pcs", NULL };
+    static const struct { const char *from, *to, *message; } edits[] = {
+        { "info scene = fig6", "info scene = m\001x", ":12: a control character" },
+        { "info scene = fig6", "info scene = " "0123456789012345678901234567890123456789012345678901234567890123"
+                               "0123456789012345678901234567890123456789012345678901234567890123",
+          "longer than a scene's name" },
+        { "vary excitation.frequency = 120,122", "vary excitation.frequency = 120,122`touch PWNED`",
+          ":9: a value the field cannot take" },
+        { "vary excitation.frequency = 120,122", "vary excitation.frequency = 120,120", ":9: a value given twice" },
+        { "vary excitation.frequency = 120,122", "vary excitation.frequency = 120,,122", "cannot take" },
+        { "vary excitation.frequency = 120,122", "vary excitation.frequency = 1e999", "cannot take" },
+        { "vary run.model = free,pcs", "vary run.model = free,'pcs'", ":10: a value the field cannot take" },
+        { "vary run.model = free,pcs", "vary scene.name = a,b", ":10: not a field a map varies" },
+        { "vary run.model = free,pcs", "vary run.colour = a,b", "not a field a map varies" },
+        { "vary run.model = free,pcs", "vary excitation.frequency = 1,2", "a field varied twice" },
+        { "repeat = 2", "repeat = 0", ":7: repeat is not an integer in [1, 1000]" },
+        { "repeat = 2", "repeat = 2x", "repeat is not an integer" },
+        { "repeat = 2\n", "", "no repeat line" },
+        { "format = 1", "format = 2", ":3: a format this version does not read" },
+        { "precision = ", "!touch PWNED\nprecision = ", ":5: not a line of an identity" },
+    };
+    map_grid grid, back;
+    char sub[128], path[256], scene_name[SCENE_TEXT];
+    char *identity;
+    size_t k;
+    FILE *out;
+    (void)state;
+    load_base();
+    grid_of(&grid, specs, 2);
+    /* a path with a line break is made one line; the name with a backquote is kept */
+    snprintf(base.params.name, sizeof base.params.name, "m`touch PWNED`x @m '");
+    identity = map_identity_text(&grid, &base, "two\nvary x = 1", "beamslider map ...");
+    assert_non_null(identity);
+    assert_non_null(strstr(identity, "info scene_file = two?vary x = 1\n"));
+    snprintf(sub, sizeof sub, "%s/identity", dir);
+    assert_int_equal(map_dir_claim(sub, identity, err, sizeof err), 0);
+    assert_int_equal(map_identity_read(sub, &back, scene_name, err, sizeof err), 0);
+    assert_string_equal(scene_name, "m`touch PWNED`x @m '");
+    assert_int_equal(back.cases, 8);
+    map_grid_free(&back);
+    free(identity);
+    /* the same with fig6 and edits */
+    snprintf(base.params.name, sizeof base.params.name, "fig6");
+    identity = map_identity_text(&grid, &base, "configs/fig6.ini", "beamslider map ...");
+    snprintf(path, sizeof path, "%s/" MAP_IDENTITY_FILE, sub);
+    for (k = 0; k < sizeof edits / sizeof *edits; ++k) {
+        const char *at = strstr(identity, edits[k].from);
+        assert_non_null(at);
+        out = fopen(path, "w");
+        assert_non_null(out);
+        fprintf(out, "%.*s%s%s", (int)(at - identity), identity, edits[k].to, at + strlen(edits[k].from));
+        assert_int_equal(fclose(out), 0);
+        assert_int_equal(map_identity_read(sub, &back, scene_name, err, sizeof err), -1);
+        if (!strstr(err, edits[k].message) || !strstr(err, MAP_IDENTITY_FILE)) {
+            print_error("edit %zu: message \"%s\" lacks \"%s\" or the file\n", k, err, edits[k].message);
+            fail();
+        }
+    }
+    /* cut short: the last line without its end */
+    out = fopen(path, "w");
+    assert_non_null(out);
+    fprintf(out, "%.*s", (int)strlen(identity) - 1, identity);
+    assert_int_equal(fclose(out), 0);
+    assert_int_equal(map_identity_read(sub, &back, scene_name, err, sizeof err), -1);
+    assert_err_has("no line end");
+    free(identity);
+    map_grid_free(&grid);
+    remove_dir(sub);
+}
+
 /* Rows spread over result files in any way, with torn and foreign lines,
  * merge into the same table. */
 static void test_result_files_merge_whole_rows_only(void **state)
@@ -493,6 +568,31 @@ static void test_result_files_merge_whole_rows_only(void **state)
     fclose(out);
     map_found_free(&found, grid.cases);
     assert_string_equal(table_a, table_b);
+    /* map-plot reads the points table back: each row parses as its point's */
+    {
+        char points_header[MAP_POINTS_HEADER], why[256], line[4096];
+        map_point_figures figures;
+        const char *at;
+        long point;
+        assert_int_equal(map_table_points_header(&grid, points_header, sizeof points_header), 0);
+        at = strstr(table_a, points_header);
+        assert_non_null(at);
+        at = strchr(at, '\n') + 1;
+        for (point = 0; point < grid.points; ++point) {
+            const size_t n = strcspn(at, "\n");
+            snprintf(line, sizeof line, "%.*s", (int)n, at);
+            if (map_table_point_parse(&grid, point, line, &figures, why, sizeof why) != 0) {
+                print_error("%s: %s\n", line, why);
+                fail();
+            }
+            assert_int_equal(figures.point, point);
+            at += n + 1;
+        }
+        assert_int_equal(*at, '\0');
+        snprintf(line, sizeof line, "%.*s", (int)strcspn(strstr(table_a, points_header), "\n"), strstr(table_a, points_header));
+        assert_string_equal(line, points_header);
+        assert_int_equal(map_table_point_parse(&grid, 1, "0,120,2", &figures, why, sizeof why), -1);
+    }
     /* the runs table has no wall_s, the points table one row per point */
     assert_null(strstr(table_a, "wall_s"));
     assert_non_null(strstr(table_a, "\n1,124,2,"));
@@ -516,6 +616,7 @@ int main(void)
         cmocka_unit_test(test_rows_carry_a_check_that_finds_damage),
         cmocka_unit_test(test_a_folder_holds_one_map_only),
         cmocka_unit_test(test_result_files_merge_whole_rows_only),
+        cmocka_unit_test(test_identity_read_back_refuses_what_map_never_writes),
         cmocka_unit_test(test_claims_overtaken_at_any_point_succeed),
     };
     return cmocka_run_group_tests(tests, make_dir, drop_dir);

@@ -1,5 +1,5 @@
 /* test_out.c - the writers of text that leaves the program in another
- * language (host/lib/out_c.c, out_json.c, out_text.c). Each is fed the texts that broke out of the
+ * language (host/lib/out_c.c, out_gnuplot.c, out_json.c, out_text.c). Each is fed the texts that broke out of the
  * old ad-hoc quoting (a quote, a backslash, a backquote, an @, a comment's
  * end, a line break, every byte) and must give back, when the result is read
  * as its language reads it, the text as given and nothing else.
@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "out_c.h"
+#include "out_gnuplot.h"
 #include "out_json.h"
 #include "out_text.h"
 
@@ -211,6 +212,103 @@ static void test_c_reals_are_floating_literals(void **state)
     assert_int_equal(out_c_real(text, (double)INFINITY), -1);
 }
 
+/* ---- gnuplot ---- */
+
+/* A single-quoted gnuplot string read as gnuplot reads it ('' is a quote);
+ * NULL if it is not one string. */
+static char *read_single_quoted(const char *string)
+{
+    const size_t n = strlen(string);
+    char *text = malloc(n + 1), *put = text;
+    size_t i;
+    assert_non_null(text);
+    if (n < 2 || string[0] != '\'' || string[n - 1] != '\'') {
+        free(text);
+        return NULL;
+    }
+    for (i = 1; i + 1 < n; ++i) {
+        if (string[i] == '\'') {
+            if (string[i + 1] != '\'' || i + 2 >= n) { /* a lone quote ends the string early */
+                free(text);
+                return NULL;
+            }
+            ++i;
+        }
+        *put++ = string[i];
+    }
+    *put = '\0';
+    return text;
+}
+
+static void test_gnuplot_strings_are_single_quoted_as_given(void **state)
+{
+    static const struct { const char *text, *shown; } cases[] = {
+        { "m`touch PWNED`x", "m`touch PWNED`x" },
+        { "@m $HOME \\n # ; \"q\"", "@m $HOME \\n # ; \"q\"" },
+        { "it's '' ends with \\", "it's '' ends with \\" },
+        { "line\nbreak\r\x7f", "line?break??" },
+        { "caf\xc3\xa9 lat\xe9in", "caf\xc3\xa9 lat?in" },
+        { "", "" },
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof cases / sizeof *cases; ++i) {
+        char *string = written(out_gnuplot_string, cases[i].text), *back = read_single_quoted(string);
+        if (!back || strcmp(back, cases[i].shown)) {
+            print_error("case %zu: %s reads as %s\n", i, string, back ? back : "(not one string)");
+            fail();
+        }
+        free(back);
+        free(string);
+    }
+    fill_every_byte();
+    {
+        char *string = written(out_gnuplot_string, every_byte), *back = read_single_quoted(string);
+        const char *c;
+        assert_non_null(back);
+        for (c = string; *c; c += out_text_utf8_length(c))
+            assert_true(out_text_utf8_length(c) > 0 && (unsigned char)*c >= 0x20 && *c != 0x7f);
+        free(back);
+        free(string);
+    }
+}
+
+static void test_gnuplot_paths_are_exact_or_refused(void **state)
+{
+    char *string, *back;
+    (void)state;
+    string = written(out_gnuplot_path, "/tmp/map \"'\xff`x`/plot.dat");
+    back = read_single_quoted(string);
+    assert_non_null(back);
+    assert_string_equal(back, "/tmp/map \"'\xff`x`/plot.dat"); /* byte for byte: the file's name */
+    free(back);
+    free(string);
+    assert_int_equal(out_gnuplot_path_ok("a\nb"), 0);
+    assert_int_equal(out_gnuplot_path_ok("a\tb"), 0);
+    assert_int_equal(out_gnuplot_path_ok("/tmp/ok'`"), 1);
+    {
+        char *data = NULL;
+        size_t size = 0;
+        FILE *out = open_memstream(&data, &size);
+        assert_int_equal(out_gnuplot_path(out, "a\nb"), -1);
+        fclose(out);
+        assert_string_equal(data, ""); /* nothing written */
+        free(data);
+    }
+}
+
+static void test_gnuplot_comments_are_one_line(void **state)
+{
+    char *line;
+    (void)state;
+    line = written(out_gnuplot_comment, "dir\n!touch PWNED \\");
+    assert_string_equal(line, "# dir?!touch PWNED ?\n"); /* no line break, no continuation */
+    free(line);
+    line = written(out_gnuplot_comment, "a \\ b");
+    assert_string_equal(line, "# a \\ b\n");
+    free(line);
+}
+
 /* ---- JSON ---- */
 
 /* The line out_json_finish prints for j, malloc'd. */
@@ -347,6 +445,9 @@ int main(void)
         cmocka_unit_test(test_c_identifiers_are_checked),
         cmocka_unit_test(test_c_macro_names_are_identifiers),
         cmocka_unit_test(test_c_reals_are_floating_literals),
+        cmocka_unit_test(test_gnuplot_strings_are_single_quoted_as_given),
+        cmocka_unit_test(test_gnuplot_paths_are_exact_or_refused),
+        cmocka_unit_test(test_gnuplot_comments_are_one_line),
         cmocka_unit_test(test_json_numbers_not_finite_are_null),
         cmocka_unit_test(test_json_number_grammar),
         cmocka_unit_test(test_json_texts_read_back_as_given_and_utf8),

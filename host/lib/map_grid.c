@@ -8,8 +8,6 @@
 #include <string.h>
 #include "scene_values.h"
 
-#define MAP_MAX_VALUES 100000 /* values of one field */
-
 void map_grid_init(map_grid *grid)
 {
     memset(grid, 0, sizeof *grid);
