@@ -167,6 +167,9 @@ sed -i '/^name = /d' "$tmp/two${nl}# sample_rate = 1 Hz.ini"
 "$bin" twin-plant "$tmp/two${nl}# sample_rate = 1 Hz.ini" --out "$tmp/plant2.csv" >"$tmp/o" 2>"$tmp/e"
 check_status "twin-plant of a scene named with a line break exits 0" 0 $? "$tmp/e"
 check "... and forges no header line" test "$(grep -c '^# sample_rate' "$tmp/plant2.csv")" -eq 1
+"$bin" modes "$tmp/two${nl}# sample_rate = 1 Hz.ini" >"$tmp/o" 2>"$tmp/e"
+check_status "modes of it exits 0" 0 $? "$tmp/e"
+check "... its table's first line is one line" test "$(grep -c '^# ' "$tmp/o")" -eq "$("$bin" modes "$tmp/hostile.ini" | grep -c '^# ')"
 
 # ---- gnuplot: map-plot of that map (its name from the folder's identity),
 # with a hostile --title and --mark label, in a folder named with a quote
