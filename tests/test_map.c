@@ -159,8 +159,22 @@ static void test_bad_vary_specs_are_refused_with_the_reason(void **state)
     map_grid_init(&grid);
     assert_int_equal(map_grid_add(&grid, &base, "excitation.frequency=1:10000:1", err, sizeof err), 0);
     assert_int_equal(map_grid_finish(&grid, 101, err, sizeof err), -1);
-    assert_err_has("more than 1000000 cases");
+    assert_err_has("--repeat 101: 10000 grid points times 101 repeats, more than a map may have (at most 1000000 cases)");
     assert_int_equal(map_grid_finish(&grid, 0, err, sizeof err), -1);
+    /* counts refused before any value is checked or allocated: a second field
+     * of 1000 values, a range of 1e300 / 1e-300 values (inf as a count) */
+    assert_int_equal(map_grid_add(&grid, &base, "excitation.acceleration=1:1000:1", err, sizeof err), -1);
+    assert_err_has("--vary excitation.acceleration=1:1000:1: 1e+07 grid points with the fields varied before it");
+    assert_int_equal(grid.vary_count, 1);
+    map_grid_free(&grid);
+    map_grid_init(&grid);
+    assert_int_equal(map_grid_add(&grid, &base, "excitation.frequency=1:1e300:1e-300", err, sizeof err), -1);
+    assert_err_has("inf values, at most 100000 a field");
+    assert_int_equal(map_grid_add(&grid, &base, "excitation.frequency=1:100001:1", err, sizeof err), -1);
+    assert_err_has("100001 values, at most 100000 a field");
+    /* a value twice, found among many (sorted, not pairwise) */
+    assert_int_equal(map_grid_add(&grid, &base, "excitation.frequency=1,2,3,4,5,6,7,8,9,3", err, sizeof err), -1);
+    assert_err_has("value 3 given twice");
     map_grid_free(&grid);
 }
 
