@@ -102,58 +102,82 @@ check_has "... and declares it" "$tmp/o" "static const bs_observer_gains gains_f
 # ---- JSON: every command's summary, read by a strict parser (one line,
 # UTF-8, no NaN or Infinity), with the name as given and null for a number
 # that is not finite
-cat >"$tmp/json_check.py" <<'EOF'
+# json_check DESCRIPTION FILE [KEY=JSON | KEY~TEXT ...]: FILE must be one JSON
+# line with those members (~: a text as given). The checks are collected and
+# run by one python at the end (python starts slowly).
+json_checks=0
+json_check() {
+    json_checks=$((json_checks + 1))
+    cp "$2" "$tmp/json.$json_checks.out"
+    description=$1
+    shift 2
+    printf '%s\0' "$description" "$@" >"$tmp/json.$json_checks.args"
+}
+json_run_checks() { # prints ok/FAIL lines as pass and fail do, then counts them in
+    cat >"$tmp/json_check.py" <<'EOF'
 import json, sys
 def constant(name):
     raise ValueError("not JSON: " + name)
-text = open(sys.argv[1], "rb").read().decode("utf-8")
-lines = text.split("\n")
-if len(lines) != 2 or lines[1] != "":
-    sys.exit("not one line: %r" % text[:300])
-summary = json.loads(lines[0], parse_constant=constant)
-for pair in sys.argv[2:]:
-    key, want = pair.split("=", 1)
-    if key not in summary or summary[key] != json.loads(want):
-        sys.exit("%s: %r, expected %s" % (key, summary.get(key, "(none)"), want))
+def check(out, pairs):
+    text = open(out, "rb").read().decode("utf-8")
+    lines = text.split("\n")
+    if len(lines) != 2 or lines[1] != "":
+        return "not one line: %r" % text[:300]
+    try:
+        summary = json.loads(lines[0], parse_constant=constant)
+    except ValueError as e:
+        return "%s: %s" % (e, text[:300])
+    for pair in pairs:
+        if "~" in pair and ("=" not in pair or pair.index("~") < pair.index("=")):
+            key, want = pair.split("~", 1)
+        else:
+            key, want = pair.split("=", 1)
+            want = json.loads(want)
+        if key not in summary or summary[key] != want:
+            return "%s: %r, expected %r" % (key, summary.get(key, "(none)"), want)
+    return None
+for n in range(1, int(sys.argv[2]) + 1):
+    base = "%s/json.%d" % (sys.argv[1], n)
+    args = open(base + ".args", "rb").read().decode("utf-8", "surrogateescape").split("\0")[:-1]
+    try:
+        why = check(base + ".out", args[1:])
+    except UnicodeDecodeError as e:
+        why = "not UTF-8: %s" % e
+    print("ok   - %s" % args[0] if why is None else "FAIL - %s\n       %s" % (args[0], why))
 EOF
-json_check() { # json_check DESCRIPTION FILE [KEY=JSON ...]: FILE is one JSON line with those members
-    description=$1
-    file=$2
-    shift 2
-    if report=$(python3 "$tmp/json_check.py" "$file" "$@" 2>&1); then
-        pass "$description"
-    else
-        fail "$description" "$report; $(head -c 400 "$file")"
-    fi
+    python3 "$tmp/json_check.py" "$tmp" "$json_checks" >"$tmp/json_report" 2>&1
+    cat "$tmp/json_report"
+    passed=$((passed + $(grep -c '^ok' "$tmp/json_report")))
+    failed=$((failed + $(grep -c '^FAIL' "$tmp/json_report")))
+    [ "$(grep -c -e '^ok' -e '^FAIL' "$tmp/json_report")" -eq "$json_checks" ] || fail "the JSON checks ran"
 }
-json_text() { python3 -c 'import json, sys; print(json.dumps(sys.argv[1]))' "$1"; }
-jname=$(json_text "$name")
+
 
 "$bin" run "$tmp/hostile.ini" >"$tmp/o" 2>"$tmp/e"
 check_status "run of the hostile scene exits 0" 0 $? "$tmp/e"
-json_check "run: the summary is JSON with the name as given" "$tmp/o" "scene=$jname"
+json_check "run: the summary is JSON with the name as given" "$tmp/o" "scene~$name"
 "$bin" sweep "$tmp/hostile.ini" --dir up --out "$tmp/sweep.csv" --from 0.29 --to 0.3 --step 0.01 --hold 1 \
     --record 1 >"$tmp/o" 2>"$tmp/e"
 check_status "sweep of the hostile scene exits 0" 0 $? "$tmp/e"
-json_check "sweep: the summary is JSON with the name as given" "$tmp/o" "scene=$jname"
+json_check "sweep: the summary is JSON with the name as given" "$tmp/o" "scene~$name"
 # a folder whose name holds a quote and a byte that is no UTF-8 (Latin-1)
 dir="$tmp/map \"$(printf '\377')"
 "$bin" map "$tmp/hostile.ini" --vary excitation.frequency=120,124 --vary excitation.acceleration=10,14 --jobs 1 \
     --out "$dir" >"$tmp/o" 2>"$tmp/e"
 check_status "map of the hostile scene exits 0" 0 $? "$tmp/e"
-json_check "map: the summary is JSON (the folder's byte 0xff as U+FFFD)" "$tmp/o" "scene=$jname" \
-    "out=$(json_text "$tmp/map \"$(printf '\357\277\275')")" complete=true
+json_check "map: the summary is JSON (the folder's byte 0xff as U+FFFD)" "$tmp/o" "scene~$name" \
+    "out~$tmp/map \"$(printf '\357\277\275')" complete=true
 "$bin" map-merge "$dir" >"$tmp/o" 2>"$tmp/e"
 check_status "map-merge of it exits 0" 0 $? "$tmp/e"
-json_check "map-merge: the summary is JSON with the name as given" "$tmp/o" "scene=$jname" \
+json_check "map-merge: the summary is JSON with the name as given" "$tmp/o" "scene~$name" \
     'command="map-merge"' cases=4 complete=true
 "$bin" twin-plant "$tmp/hostile.ini" --snr 40 --out "$tmp/plant.csv" >"$tmp/o" 2>"$tmp/e"
 check_status "twin-plant of the hostile scene exits 0" 0 $? "$tmp/e"
-json_check "twin-plant: the summary is JSON with the name as given" "$tmp/o" "plant=$jname" steps=100
+json_check "twin-plant: the summary is JSON with the name as given" "$tmp/o" "plant~$name" steps=100
 "$bin" twin "$tmp/hostile.ini" --measured "$tmp/plant.csv" --out "$tmp/est.csv" --score-after 100 \
     >"$tmp/o" 2>"$tmp/e"
 check_status "twin on it exits 0" 0 $? "$tmp/e"
-json_check "twin: the summary is JSON, nothing scored is null" "$tmp/o" "scene=$jname" within=null rms_s_error=null
+json_check "twin: the summary is JSON, nothing scored is null" "$tmp/o" "scene~$name" within=null rms_s_error=null
 "$bin" twin-plant "$tmp/hostile.ini" --t-end 1e-9 --out "$tmp/plant0.csv" >"$tmp/o" 2>"$tmp/e"
 if [ $? -eq 2 ]; then # a run of no step may be refused as such
     pass "twin-plant of no step is refused"
@@ -210,6 +234,7 @@ sed -i 's/^info scene = .*/info scene = x\x01y/' "$dir/map-identity.txt"
 check_status "map-plot of an identity edited to hold a control character exits 2" 2 $? "$tmp/e"
 check_has "... naming the file and line" "$tmp/e" "map-identity.txt:12: a control character"
 
+json_run_checks
 check "nothing ran: no PWNED file" test ! -e PWNED -a ! -e "$tmp/PWNED" -a ! -e "$dir/PWNED"
 echo "check_outputs: $passed passed, $failed failed ($bin)"
 [ "$failed" -eq 0 ]
