@@ -141,6 +141,33 @@ bad "a shard index out of range" "--shard 5/4: shard index out of range; allowed
     --vary excitation.frequency=120,124 --shard 5/4
 bad "a value out of range" "[excitation] frequency = 0: out of range" --vary excitation.frequency=0,120
 bad "a start outside the clamps" "cannot run" --vary run.s0=0.01,0.3
+# counts from the input are checked before anything is allocated or checked
+bad "a grid of more points than a map may have" \
+    "--vary excitation.acceleration=1:1000:1: 1e+07 grid points with the fields varied before it, more than a map may have (at most 1000000 cases" \
+    --vary excitation.frequency=1:10000:1 --vary excitation.acceleration=1:1000:1
+bad "more cases than a map may have" "--repeat 1000: 100000 grid points times 1000 repeats, more than a map may have" \
+    --vary excitation.frequency=1:100000:1 --repeat 1000
+bad "a range of 1e300 / 1e-300 values" "inf values, at most 100000 a field" --vary excitation.frequency=1:1e300:1e-300
+
+# ---- a large map shows its progress within seconds (on a terminal, as run
+# does): 3000 grid points take some 15 s to check before the first case runs
+if command -v script >/dev/null 2>&1; then
+    cat >"$tmp/large.sh" <<EOF
+exec "$(cd "$(dirname "$bin")" && pwd)/$(basename "$bin")" map "$(pwd)/configs/fig6.ini" --set run.t_end=0.01 \
+    --vary excitation.frequency=100:399:1 --vary excitation.acceleration=1:10:1 --out "$tmp/large"
+EOF
+    timeout 10 script -qefc "sh '$tmp/large.sh'" "$tmp/large.tty" >/dev/null 2>&1 &
+    large_pid=$!
+    for attempt in $(seq 1 40); do # 2 s
+        grep -q 'checking the cases' "$tmp/large.tty" 2>/dev/null && break
+        sleep 0.05
+    done
+    kill "$large_pid" 2>/dev/null
+    wait "$large_pid" 2>/dev/null
+    check_has "a large map shows its progress within 2 s" "$tmp/large.tty" "map: checking the cases' scenes ["
+else
+    echo "check_map: the progress of a large map not checked: no script(1) for a terminal"
+fi
 "$bin" map-merge "$tmp/none" >"$tmp/o" 2>"$tmp/e"
 check_status "map-merge of a folder without a map exits 2" 2 $? "$tmp/e"
 
@@ -174,6 +201,31 @@ else
 fi
 "$bin" map-plot "$tmp/one" --mark 150,12,far --out "$tmp/plot" >"$tmp/o" 2>"$tmp/e"
 check_status "map-plot with a mark off the map exits 2" 2 $? "$tmp/e"
+# a table cut short or edited is refused with its line, and nothing drawn
+damaged() { # damaged DESCRIPTION MESSAGE SED-SCRIPT|cut: map-plot of one's table so changed
+    rm -rf "$tmp/damaged" "$tmp"/dplot*
+    cp -r "$tmp/one" "$tmp/damaged"
+    if [ "$3" = cut ]; then
+        head -c -9 "$tmp/one/map.csv" >"$tmp/damaged/map.csv"
+    else
+        sed -i "$3" "$tmp/damaged/map.csv"
+    fi
+    "$bin" map-plot "$tmp/damaged" --out "$tmp/dplot" >"$tmp/o" 2>"$tmp/e"
+    check_status "map-plot of a table $1 exits 2" 2 $? "$tmp/e"
+    check_has "... naming the file and line" "$tmp/e" "$2"
+    check "... and writes nothing" test -z "$(ls "$tmp" | grep '^dplot')"
+}
+damaged "cut mid-line" "map.csv:7: the last line is cut short" cut
+damaged "without its last row" "map.csv: 1 of the map's 6 grid points have no row" '$d'
+damaged "with a row twice" "map.csv:4: expected the row of grid point 2" '3p'
+damaged "with a garbage row" "map.csv:3: 2 columns, the header has 24" '3s/.*/1,garbage/'
+damaged "with a column cut off" "map.csv:2: 23 columns, the header has 24" '2s/,[^,]*$//'
+damaged "with a column more" "map.csv:2: 25 columns, the header has 24" '2s/$/,1/'
+damaged "with a number out of its range" "map.csv:3: column agreement is not a fraction in [0, 1]" '3s/,other,1,/,other,2,/'
+damaged "with a number edited" "map.csv:2: column s_final_mean is not a number" '2s/,\(0\.[0-9]*\),/,`touch PWNED`,/'
+damaged "with another class" "map.csv:2: the outcome is not a class name" '2s/,other,/,another,/'
+damaged "with other values" "map.csv:2: expected excitation.frequency = 120" '2s/^0,120,/0,121,/'
+damaged "with another header" "map.csv:1: not the header of this map's table" '1s/^point/points/'
 "$bin" map-plot "$tmp/whole" --out "$tmp/plot" >"$tmp/o" 2>"$tmp/e"
 check_status "map-plot of a map of one varied field exits 2" 2 $? "$tmp/e"
 check_has "... saying it needs two" "$tmp/e" "two different varied fields"

@@ -2,15 +2,18 @@
  * files (host/lib/map_grid.c, map_case.c, map_store.c, map_table.c). The
  * whole command (workers, resume after a kill, shards, refusals) is checked
  * by tests/check_map.sh. Run from the repository root. */
-#define _POSIX_C_SOURCE 200809L
+#define _GNU_SOURCE /* RTLD_NEXT */
 
 #include "support.h"
 
 #include <dirent.h>
+#include <dlfcn.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "map_case.h"
@@ -156,8 +159,22 @@ static void test_bad_vary_specs_are_refused_with_the_reason(void **state)
     map_grid_init(&grid);
     assert_int_equal(map_grid_add(&grid, &base, "excitation.frequency=1:10000:1", err, sizeof err), 0);
     assert_int_equal(map_grid_finish(&grid, 101, err, sizeof err), -1);
-    assert_err_has("more than 1000000 cases");
+    assert_err_has("--repeat 101: 10000 grid points times 101 repeats, more than a map may have (at most 1000000 cases)");
     assert_int_equal(map_grid_finish(&grid, 0, err, sizeof err), -1);
+    /* counts refused before any value is checked or allocated: a second field
+     * of 1000 values, a range of 1e300 / 1e-300 values (inf as a count) */
+    assert_int_equal(map_grid_add(&grid, &base, "excitation.acceleration=1:1000:1", err, sizeof err), -1);
+    assert_err_has("--vary excitation.acceleration=1:1000:1: 1e+07 grid points with the fields varied before it");
+    assert_int_equal(grid.vary_count, 1);
+    map_grid_free(&grid);
+    map_grid_init(&grid);
+    assert_int_equal(map_grid_add(&grid, &base, "excitation.frequency=1:1e300:1e-300", err, sizeof err), -1);
+    assert_err_has("inf values, at most 100000 a field");
+    assert_int_equal(map_grid_add(&grid, &base, "excitation.frequency=1:100001:1", err, sizeof err), -1);
+    assert_err_has("100001 values, at most 100000 a field");
+    /* a value twice, found among many (sorted, not pairwise) */
+    assert_int_equal(map_grid_add(&grid, &base, "excitation.frequency=1,2,3,4,5,6,7,8,9,3", err, sizeof err), -1);
+    assert_err_has("value 3 given twice");
     map_grid_free(&grid);
 }
 
@@ -320,6 +337,192 @@ static void test_a_folder_holds_one_map_only(void **state)
     unlink(sub);
 }
 
+/* ---- shards started together ----
+ * Shards started at once race to make the folder and its identity. Here
+ * another shard's whole start (its claim, then its result file) is made to
+ * happen just before the n-th folder call of this process's claim, for every
+ * n: the functions below stand in for the C library's (a definition in the
+ * program comes before the library's) and run that start in a child (another
+ * process id, as a shard has) when the count comes. Every claim must
+ * succeed, whatever call it is overtaken at. */
+static int race_at;                /* the call to be overtaken at (0: none) */
+static int race_calls;             /* calls seen since race_at was set */
+static int race_failed;            /* the other shard's start failed */
+static char race_dir[128];
+static const char *race_identity;
+static const map_grid *race_grid;
+
+static void race_point(void)
+{
+    pid_t pid;
+    int status;
+    if (!race_at || ++race_calls != race_at)
+        return;
+    pid = fork();
+    if (pid == 0) {
+        char why[2048], path[4400];
+        int fd = -1;
+        race_at = 0;
+        if (map_dir_claim(race_dir, race_identity, why, sizeof why) != 0
+            || (fd = map_results_create(race_dir, race_grid, path, sizeof path, why, sizeof why)) < 0)
+            fprintf(stderr, "the other shard: %s\n", why);
+        _exit(fd < 0);
+    }
+    race_failed |= pid < 0 || waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0;
+}
+
+/* The C library's function name, found behind this program's. */
+static void *next_function(const char *name)
+{
+    void *real = dlsym(RTLD_NEXT, name);
+    if (!real)
+        abort();
+    return real;
+}
+
+int mkdir(const char *path, mode_t mode)
+{
+    int (*real)(const char *, mode_t);
+    *(void **)&real = next_function("mkdir");
+    race_point();
+    return real(path, mode);
+}
+
+int access(const char *path, int mode)
+{
+    int (*real)(const char *, int);
+    *(void **)&real = next_function("access");
+    race_point();
+    return real(path, mode);
+}
+
+DIR *opendir(const char *path)
+{
+    DIR *(*real)(const char *);
+    *(void **)&real = next_function("opendir");
+    race_point();
+    return real(path);
+}
+
+int link(const char *from, const char *to)
+{
+    int (*real)(const char *, const char *);
+    *(void **)&real = next_function("link");
+    race_point();
+    return real(from, to);
+}
+
+static void test_claims_overtaken_at_any_point_succeed(void **state)
+{
+    static const char *const specs[] = { "excitation.frequency=120,122", NULL };
+    map_grid grid;
+    char *identity;
+    int made, n, claimed;
+    (void)state;
+    load_base();
+    grid_of(&grid, specs, 1);
+    identity = map_identity_text(&grid, &base, "configs/fig6.ini", "beamslider map ...");
+    assert_non_null(identity);
+    snprintf(race_dir, sizeof race_dir, "%s/race", dir);
+    race_identity = identity;
+    race_grid = &grid;
+    for (made = 0; made < 2; ++made) /* the folder absent, or just made by another shard */
+        for (n = 1;; ++n) {
+            if (made)
+                assert_int_equal(mkdir(race_dir, 0777), 0);
+            race_at = n;
+            race_calls = 0;
+            race_failed = 0;
+            claimed = map_dir_claim(race_dir, identity, err, sizeof err);
+            race_at = 0;
+            if (claimed != 0 || race_failed)
+                print_error("%s, overtaken at folder call %d: %s\n", made ? "the folder made" : "no folder", n,
+                            claimed ? err : "the other shard failed");
+            assert_int_equal(claimed, 0);
+            assert_false(race_failed);
+            remove_dir(race_dir);
+            if (race_calls < n) /* the claim made fewer calls: each was overtaken once */
+                break;
+        }
+    free(identity);
+    map_grid_free(&grid);
+}
+
+/* An identity is input when read back: every line map never writes is
+ * refused with its line; text it does write (any scene name without a line
+ * break) is taken as it is. */
+static void test_identity_read_back_refuses_what_map_never_writes(void **state)
+{
+    static const char *const specs[] = { "excitation.frequency=120,122", "run.model=free,pcs", NULL };
+    static const struct { const char *from, *to, *message; } edits[] = {
+        { "info scene = fig6", "info scene = m\001x", ":12: a control character" },
+        { "info scene = fig6", "info scene = " "0123456789012345678901234567890123456789012345678901234567890123"
+                               "0123456789012345678901234567890123456789012345678901234567890123",
+          "longer than a scene's name" },
+        { "vary excitation.frequency = 120,122", "vary excitation.frequency = 120,122`touch PWNED`",
+          ":9: a value the field cannot take" },
+        { "vary excitation.frequency = 120,122", "vary excitation.frequency = 120,120", ":9: a value given twice" },
+        { "vary excitation.frequency = 120,122", "vary excitation.frequency = 120,,122", "cannot take" },
+        { "vary excitation.frequency = 120,122", "vary excitation.frequency = 1e999", "cannot take" },
+        { "vary run.model = free,pcs", "vary run.model = free,'pcs'", ":10: a value the field cannot take" },
+        { "vary run.model = free,pcs", "vary scene.name = a,b", ":10: not a field a map varies" },
+        { "vary run.model = free,pcs", "vary run.colour = a,b", "not a field a map varies" },
+        { "vary run.model = free,pcs", "vary excitation.frequency = 1,2", "a field varied twice" },
+        { "repeat = 2", "repeat = 0", ":7: repeat is not an integer in [1, 1000]" },
+        { "repeat = 2", "repeat = 2x", "repeat is not an integer" },
+        { "repeat = 2\n", "", "no repeat line" },
+        { "format = 1", "format = 2", ":3: a format this version does not read" },
+        { "precision = ", "!touch PWNED\nprecision = ", ":5: not a line of an identity" },
+    };
+    map_grid grid, back;
+    char sub[128], path[256], scene_name[SCENE_TEXT];
+    char *identity;
+    size_t k;
+    FILE *out;
+    (void)state;
+    load_base();
+    grid_of(&grid, specs, 2);
+    /* a path with a line break is made one line; the name with a backquote is kept */
+    snprintf(base.params.name, sizeof base.params.name, "m`touch PWNED`x @m '");
+    identity = map_identity_text(&grid, &base, "two\nvary x = 1", "beamslider map ...");
+    assert_non_null(identity);
+    assert_non_null(strstr(identity, "info scene_file = two?vary x = 1\n"));
+    snprintf(sub, sizeof sub, "%s/identity", dir);
+    assert_int_equal(map_dir_claim(sub, identity, err, sizeof err), 0);
+    assert_int_equal(map_identity_read(sub, &back, scene_name, err, sizeof err), 0);
+    assert_string_equal(scene_name, "m`touch PWNED`x @m '");
+    assert_int_equal(back.cases, 8);
+    map_grid_free(&back);
+    free(identity);
+    /* the same with fig6 and edits */
+    snprintf(base.params.name, sizeof base.params.name, "fig6");
+    identity = map_identity_text(&grid, &base, "configs/fig6.ini", "beamslider map ...");
+    snprintf(path, sizeof path, "%s/" MAP_IDENTITY_FILE, sub);
+    for (k = 0; k < sizeof edits / sizeof *edits; ++k) {
+        const char *at = strstr(identity, edits[k].from);
+        assert_non_null(at);
+        out = fopen(path, "w");
+        assert_non_null(out);
+        fprintf(out, "%.*s%s%s", (int)(at - identity), identity, edits[k].to, at + strlen(edits[k].from));
+        assert_int_equal(fclose(out), 0);
+        assert_int_equal(map_identity_read(sub, &back, scene_name, err, sizeof err), -1);
+        if (!strstr(err, edits[k].message) || !strstr(err, MAP_IDENTITY_FILE)) {
+            print_error("edit %zu: message \"%s\" lacks \"%s\" or the file\n", k, err, edits[k].message);
+            fail();
+        }
+    }
+    /* cut short: the last line without its end */
+    out = fopen(path, "w");
+    assert_non_null(out);
+    fprintf(out, "%.*s", (int)strlen(identity) - 1, identity);
+    assert_int_equal(fclose(out), 0);
+    assert_int_equal(map_identity_read(sub, &back, scene_name, err, sizeof err), -1);
+    assert_err_has("no line end");
+    free(identity);
+    map_grid_free(&grid);
+    remove_dir(sub);
+}
+
 /* Rows spread over result files in any way, with torn and foreign lines,
  * merge into the same table. */
 static void test_result_files_merge_whole_rows_only(void **state)
@@ -379,6 +582,31 @@ static void test_result_files_merge_whole_rows_only(void **state)
     fclose(out);
     map_found_free(&found, grid.cases);
     assert_string_equal(table_a, table_b);
+    /* map-plot reads the points table back: each row parses as its point's */
+    {
+        char points_header[MAP_POINTS_HEADER], why[256], line[4096];
+        map_point_figures figures;
+        const char *at;
+        long point;
+        assert_int_equal(map_table_points_header(&grid, points_header, sizeof points_header), 0);
+        at = strstr(table_a, points_header);
+        assert_non_null(at);
+        at = strchr(at, '\n') + 1;
+        for (point = 0; point < grid.points; ++point) {
+            const size_t n = strcspn(at, "\n");
+            snprintf(line, sizeof line, "%.*s", (int)n, at);
+            if (map_table_point_parse(&grid, point, line, &figures, why, sizeof why) != 0) {
+                print_error("%s: %s\n", line, why);
+                fail();
+            }
+            assert_int_equal(figures.point, point);
+            at += n + 1;
+        }
+        assert_int_equal(*at, '\0');
+        snprintf(line, sizeof line, "%.*s", (int)strcspn(strstr(table_a, points_header), "\n"), strstr(table_a, points_header));
+        assert_string_equal(line, points_header);
+        assert_int_equal(map_table_point_parse(&grid, 1, "0,120,2", &figures, why, sizeof why), -1);
+    }
     /* the runs table has no wall_s, the points table one row per point */
     assert_null(strstr(table_a, "wall_s"));
     assert_non_null(strstr(table_a, "\n1,124,2,"));
@@ -402,6 +630,8 @@ int main(void)
         cmocka_unit_test(test_rows_carry_a_check_that_finds_damage),
         cmocka_unit_test(test_a_folder_holds_one_map_only),
         cmocka_unit_test(test_result_files_merge_whole_rows_only),
+        cmocka_unit_test(test_identity_read_back_refuses_what_map_never_writes),
+        cmocka_unit_test(test_claims_overtaken_at_any_point_succeed),
     };
     return cmocka_run_group_tests(tests, make_dir, drop_dir);
 }

@@ -23,23 +23,27 @@
  * table is fitted twice, at the float and at the double tolerance, because
  * float needs fewer pieces, and a field whose text differs between the two is
  * printed under #if BS_REAL_FLOAT. Text from the scene file (name,
- * description, the path) is printed as escaped C string literals only, never
- * raw into a comment or code. The output depends only on the scene file, not
+ * description, the path) reaches the header only through the C writer
+ * (host/lib/out_c.h): as string literals, and the name mapped into the
+ * include guard. The output depends only on the scene file, not
  * on this binary's bs_real.
  */
-#include <ctype.h>
+#define _POSIX_C_SOURCE 200809L /* open_memstream */
+
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
+#include "out_c.h"
 #include "scene_build.h"
 
 /* A growing text buffer. */
 typedef struct text {
     char *data;
     size_t length, size;
+    int failed; /* a value had no C literal */
 } text;
 
 static void append(text *t, const char *format, ...)
@@ -63,30 +67,24 @@ static void append(text *t, const char *format, ...)
     t->length += (size_t)need;
 }
 
-/* text as a C string literal: quotes, backslashes and question marks (no
- * trigraphs) escaped, anything outside printable ASCII as a 3-digit octal
- * escape (the next character can never extend it). */
+/* text as a C string literal (out_c.h says how). */
 static void append_string(text *t, const char *value)
 {
-    const unsigned char *c;
-    append(t, "\"");
-    for (c = (const unsigned char *)value; *c; ++c) {
-        if (*c == '"' || *c == '\\' || *c == '?')
-            append(t, "\\%c", *c);
-        else if (*c >= 0x20 && *c < 0x7f)
-            append(t, "%c", *c);
-        else
-            append(t, "\\%03o", *c);
-    }
-    append(t, "\"");
+    char *literal = NULL;
+    size_t size = 0;
+    FILE *memory = open_memstream(&literal, &size);
+    if (!memory || out_c_string(memory, value) != 0 || fclose(memory) != 0)
+        abort(); /* out of memory, as append */
+    append(t, "%s", literal);
+    free(literal);
 }
 
-/* BS_R(x) pastes an f for float, so x must read as a floating literal. */
+/* BS_R(x) (out_c.h); a value that is not finite marks the text failed. */
 static void append_real(text *t, double value)
 {
-    char number[40];
-    snprintf(number, sizeof number, "%.17g", value);
-    append(t, "BS_R(%s%s)", number, strpbrk(number, ".e") ? "" : ".0");
+    char literal[OUT_C_REAL];
+    t->failed |= out_c_real(literal, value) != 0;
+    append(t, "%s", literal);
 }
 
 /* The used part [used1][used2][used3] of a field declared [.][size2][size3],
@@ -136,7 +134,7 @@ static void append_values(text *t, const double *values, int rank, int used1, in
  * double scene print differently (the shape table). */
 #define PRINT_FIELD(kind, name, d1, d2, d3, rule, unit, meaning)                                      \
     {                                                                                               \
-        text single = { 0, 0, 0 }, twin = { 0, 0, 0 };                                              \
+        text single = { 0, 0, 0, 0 }, twin = { 0, 0, 0, 0 };                                              \
         PRINT_##kind(&single, as_float, name, d1, d2, d3);                                          \
         PRINT_##kind(&twin, as_double, name, d1, d2, d3);                                           \
         append(out, "    /* %s%s%s%s */\n", #name, *unit ? " [" : "", unit, *unit ? "]" : "");    \
@@ -144,6 +142,7 @@ static void append_values(text *t, const double *values, int rank, int used1, in
             append(out, "    %s,\n", single.data);                                                  \
         else                                                                                        \
             append(out, "#if BS_REAL_FLOAT\n    %s,\n#else\n    %s,\n#endif\n", single.data, twin.data); \
+        out->failed |= single.failed | twin.failed;                                                 \
         free(single.data);                                                                          \
         free(twin.data);                                                                            \
     }
@@ -221,11 +220,10 @@ int cli_gen(int argc, char **argv)
     static scene_model model;
     static shape_fit fits[2]; /* [0] double, [1] float */
     static scene_data as_precision[2];
-    text out = { 0, 0, 0 };
-    char guard[64] = "BS_SCENE_";
+    text out = { 0, 0, 0, 0 };
+    char guard[57]; /* with _CONFIG or _DATA, within 63 characters */
     char err[1024];
-    size_t g;
-    int i, is_float;
+    int is_float;
 
     if (argc != 1) {
         cli_error("gen takes exactly one scene file");
@@ -243,9 +241,7 @@ int cli_gen(int argc, char **argv)
         as_precision[is_float] = model.data;
         scene_data_set_shapes(&as_precision[is_float], &fits[is_float]);
     }
-    for (g = 9, i = 0; file.params.name[i] && g < sizeof guard - 8; ++i)
-        guard[g++] = isalnum((unsigned char)file.params.name[i]) ? (char)toupper((unsigned char)file.params.name[i]) : '_';
-    guard[g] = '\0';
+    out_c_macro_name("BS_SCENE_", file.params.name, guard, sizeof guard);
 
     append(&out, "/* Compile-time scene BS_SCENE_NAME (below), generated from BS_SCENE_SOURCE by\n");
     append(&out, " * `beamslider gen`; do not edit: `make configs` regenerates it. Build the core\n");
@@ -260,6 +256,11 @@ int cli_gen(int argc, char **argv)
     append(&out, "\nstatic const bs_scene bs_compiled_scene = {\n");
     append_initialiser(&out, &as_precision[1], &as_precision[0]);
     append(&out, "};\n#endif\n");
+    if (out.failed) {
+        cli_error("%s: a value of the scene is not finite: no header written", argv[0]);
+        free(out.data);
+        return CLI_FAILED;
+    }
     fputs(out.data, stdout);
     free(out.data);
     return fflush(stdout) == 0 && !ferror(stdout) ? CLI_OK : CLI_FAILED;

@@ -12,6 +12,7 @@
 #include "map_pool.h"
 #include "map_store.h"
 #include "map_table.h"
+#include "progress.h"
 #include "scene_build.h"
 #include "scene_values.h"
 #include "summary.h"
@@ -27,7 +28,8 @@ static const char map_usage[] =
     "  (one row per grid point: outcome class fractions, spread) are written. JSON summary on\n"
     "  stdout. docs/maps.md says what the columns and outcome classes mean.\n"
     "usage: beamslider map-merge DIR\n"
-    "  writes DIR/runs.csv and DIR/map.csv from the result files of every shard (all cases done)\n";
+    "  writes DIR/runs.csv and DIR/map.csv from the result files of every shard (all cases done);\n"
+    "  JSON summary on stdout (cases, done, lines ignored, complete)\n";
 
 typedef struct map_cli {
     const char *scene_path, *dir;
@@ -108,28 +110,39 @@ static int parse_options(int argc, char **argv, map_cli *cli, scene_file *file)
 /* Every case's scene must build (a derived check, such as s0 within the
  * clamp stops, can fail for a combination of values): checked before
  * anything is written. The repeats differ only in s0, and the start range
- * is an interval, so the first and last repeat of each point suffice. */
+ * is an interval, so the first and last repeat of each point suffice (one
+ * when there is one). A build is a modal analysis and a shape fit, some
+ * milliseconds: a map of 100 000 points takes minutes here, so it shows its
+ * progress (on a terminal, as run does). */
 static int check_cases(const map_grid *grid, const scene_file *base)
 {
     static scene_file file; /* static: large */
     static bs_scene scene;
     static scene_model model;
-    char err[2048];
+    char err[2048], detail[64];
+    progress bar;
     long point;
+    int status = 0;
 
-    for (point = 0; point < grid->points; ++point) {
+    progress_start(&bar, "map: checking the cases' scenes");
+    for (point = 0; point < grid->points && status == 0; ++point) {
         int k;
-        for (k = 0; k < 2; ++k) {
+        snprintf(detail, sizeof detail, "%ld/%ld points", point, grid->points);
+        progress_update(&bar, (double)point / (double)grid->points, detail);
+        for (k = 0; k < (grid->repeat > 1 ? 2 : 1) && status == 0; ++k) {
             const long c = point * grid->repeat + (k ? grid->repeat - 1 : 0);
             if (map_case_scene(grid, base, c, &file, err, sizeof err) != 0
                 || scene_build(&file, &scene, &model, err, sizeof err) != 0) {
+                progress_end(&bar);
                 cli_error("case %ld (grid point %ld, repeat %d) cannot run: %s", c, point,
                           map_case_repeat(grid, c), err);
-                return -1;
+                status = -1;
             }
         }
     }
-    return 0;
+    if (status == 0)
+        progress_end(&bar);
+    return status;
 }
 
 /* The command line as one text (for the identity's info line). */
@@ -317,10 +330,16 @@ int cli_map_merge(int argc, char **argv)
         return CLI_USAGE;
     }
     memset(&m, 0, sizeof m);
+    m.grid = &grid;
+    m.dir = argv[0];
     status = merge(argv[0], &grid, &m, 1) == 0 ? CLI_OK : CLI_FAILED;
     if (status == CLI_OK)
         fprintf(stderr, "map-merge: wrote %s/%s and %s/%s: %ld cases (%ld torn and %ld other lines ignored)\n",
                 argv[0], MAP_RUNS_TABLE, argv[0], MAP_POINTS_TABLE, grid.cases, m.torn, m.invalid);
+    if (summary_print_merge(stdout, scene, &m) != 0) {
+        cli_error("cannot write the summary (out of memory?)");
+        status = CLI_FAILED;
+    }
     map_grid_free(&grid);
     return status;
 }

@@ -9,10 +9,17 @@
  * transducer, _power (.png). Cells are grid indices, so that a list of
  * values as uneven as 1,2,5,10 still gives equal cells; the tics name the
  * values. Fields varied beyond the two plotted are fixed with --at.
+ *
+ * The folder is input: its identity (map_identity_read) and map.csv
+ * (map_table_point_parse) are checked line by line before anything is
+ * written, and every text in the script (the scene's name, --title, the
+ * values, the labels of --mark, the paths) goes through the gnuplot writer
+ * (out_gnuplot.h): single-quoted strings, which gnuplot never substitutes.
  */
 #define _POSIX_C_SOURCE 200809L
 
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -23,6 +30,7 @@
 #include "map_grid.h"
 #include "map_store.h"
 #include "map_table.h"
+#include "out_gnuplot.h"
 #include "outcome.h"
 
 static const char plot_usage[] =
@@ -40,8 +48,6 @@ static const char plot_usage[] =
 
 /* One value per cell and figure. */
 enum { FIG_OUTCOME, FIG_AGREEMENT, FIG_S, FIG_SPREAD, FIG_AMP, FIG_POWER, FIGURES };
-static const char *const figure_column[FIGURES] = { "outcome", "agreement", "s_final_mean", "s_final_sd",
-                                                    "amp_h_mean", "power_w_mean" };
 
 typedef struct plot_cli {
     const char *dir, *x, *y, *prefix, *title;
@@ -128,40 +134,24 @@ static void write_tics(FILE *gp, const char *axis, const map_vary *vary)
     const int every = (vary->count + 12) / 13;
     int k;
     fprintf(gp, "set %stics (", axis);
-    for (k = 0; k < vary->count; k += every)
-        fprintf(gp, "%s\"%s\" %d", k ? ", " : "", vary->values[k], k);
+    for (k = 0; k < vary->count; k += every) {
+        fputs(k ? ", " : "", gp);
+        out_gnuplot_string(gp, vary->values[k]);
+        fprintf(gp, " %d", k);
+    }
     fprintf(gp, ")\n");
 }
 
-/* The column indices of map.csv's header line for the figures. */
-static int find_columns(const char *header, int *index)
-{
-    int f, column;
-    for (f = 0; f < FIGURES; ++f) {
-        const char *at = header;
-        index[f] = -1;
-        for (column = 0; at; ++column) {
-            const size_t n = strcspn(at, ",\n");
-            if (n == strlen(figure_column[f]) && !strncmp(at, figure_column[f], n))
-                index[f] = column;
-            at = at[n] == ',' ? at + n + 1 : NULL;
-        }
-        if (index[f] < 0)
-            return -1;
-    }
-    return 0;
-}
-
 /* Reads map.csv into cells[(iy * nx + ix) * FIGURES + figure] for the rows
- * at the --at values; 0 or -1 after reporting. */
+ * at the --at values. The table must be whole: its header, one row per
+ * grid point in order, each as map-merge writes it, and nothing after.
+ * 0, or -1 after reporting the file and line. */
 static int read_table(const char *dir, const map_grid *grid, int vx, int vy, const int *at_index, double *cells)
 {
-    char path[4200];
-    char *line = NULL;
-    size_t capacity = 0;
-    int index[FIGURES];
+    char path[4200], line[4096], header[MAP_POINTS_HEADER], why[256];
+    long number = 0, point = 0;
     FILE *in;
-    int ok = 0;
+    int failed = 0;
 
     snprintf(path, sizeof path, "%s/%s", dir, MAP_POINTS_TABLE);
     in = fopen(path, "r");
@@ -169,54 +159,71 @@ static int read_table(const char *dir, const map_grid *grid, int vx, int vy, con
         cli_error("%s: %s (all cases done? beamslider map-merge %s writes it)", path, strerror(errno), dir);
         return -1;
     }
-    if (getline(&line, &capacity, in) <= 0 || find_columns(line, index) != 0) {
-        cli_error("%s: not a map table (no header with %s)", path, figure_column[0]);
-        goto done;
-    }
-    while (getline(&line, &capacity, in) > 0) {
-        const long point = strtol(line, NULL, 10);
+    map_table_points_header(grid, header, sizeof header);
+    while (!failed && fgets(line, sizeof line, in)) {
+        const size_t length = strlen(line);
+        map_point_figures figures;
         long cell;
-        int v, f, skip = 0;
-        if (point < 0 || point >= grid->points)
+        int v, skip = 0;
+        ++number;
+        if (length == 0 || line[length - 1] != '\n') {
+            snprintf(why, sizeof why, length + 1 == sizeof line ? "line too long" : "the last line is cut short");
+            failed = 1;
+            break;
+        }
+        line[length - 1] = '\0';
+        if (number == 1) {
+            if (strcmp(line, header)) {
+                snprintf(why, sizeof why, "not the header of this map's table (%.60s...)", header);
+                failed = 1;
+            }
             continue;
+        }
+        if (point >= grid->points) {
+            snprintf(why, sizeof why, "more rows than the map's %ld grid points", grid->points);
+            failed = 1;
+            break;
+        }
+        if (map_table_point_parse(grid, point, line, &figures, why, sizeof why) != 0) {
+            failed = 1;
+            break;
+        }
+        ++point;
         for (v = 0; v < grid->vary_count; ++v)
-            skip |= at_index[v] >= 0 && map_point_value(grid, point, v) != at_index[v];
+            skip |= at_index[v] >= 0 && map_point_value(grid, figures.point, v) != at_index[v];
         if (skip)
             continue;
-        cell = (long)map_point_value(grid, point, vy) * grid->vary[vx].count + map_point_value(grid, point, vx);
-        for (f = 0; f < FIGURES; ++f) {
-            const char *at = line;
-            int c;
-            for (c = 0; c < index[f] && at; ++c)
-                at = strchr(at, ',') ? strchr(at, ',') + 1 : NULL;
-            if (!at)
-                continue;
-            if (f == FIG_OUTCOME) {
-                char name[32];
-                snprintf(name, sizeof name, "%.*s", (int)strcspn(at, ",\n"), at);
-                cells[cell * FIGURES + f] = outcome_from_name(name) >= 0 ? outcome_from_name(name) : (double)NAN;
-            } else {
-                cells[cell * FIGURES + f] = strtod(at, NULL);
-            }
-        }
+        cell = (long)map_point_value(grid, figures.point, vy) * grid->vary[vx].count
+               + map_point_value(grid, figures.point, vx);
+        cells[cell * FIGURES + FIG_OUTCOME] = figures.outcome;
+        cells[cell * FIGURES + FIG_AGREEMENT] = figures.agreement;
+        cells[cell * FIGURES + FIG_S] = figures.s_final_mean;
+        cells[cell * FIGURES + FIG_SPREAD] = figures.s_final_sd;
+        cells[cell * FIGURES + FIG_AMP] = figures.amp_h_mean;
+        cells[cell * FIGURES + FIG_POWER] = figures.power_w_mean;
     }
-    ok = 1;
-done:
-    free(line);
+    if (!failed && ferror(in)) {
+        cli_error("%s: %s", path, strerror(errno));
+        fclose(in);
+        return -1;
+    }
+    if (!failed && point < grid->points) {
+        snprintf(why, sizeof why, "%ld of the map's %ld grid points have no row (cut short?)", grid->points - point,
+                 grid->points);
+        failed = 1;
+        number = 0;
+    }
     fclose(in);
-    return ok ? 0 : -1;
-}
-
-/* A text inside a gnuplot double-quoted string. */
-static void quoted(FILE *gp, const char *text)
-{
-    fputc('"', gp);
-    for (; *text; ++text) {
-        if (*text == '"' || *text == '\\')
-            fputc('\\', gp);
-        fputc(*text, gp);
+    if (failed) {
+        if (number > 0)
+            cli_error("%s:%ld: %s; not a table as map-merge writes it (run beamslider map-merge %s again)", path,
+                      number, why, dir);
+        else
+            cli_error("%s: %s; not a table as map-merge writes it (run beamslider map-merge %s again)", path, why,
+                      dir);
+        return -1;
     }
-    fputc('"', gp);
+    return 0;
 }
 
 static void write_figure(FILE *gp, const char *prefix, const char *name, const char *title, int column,
@@ -225,49 +232,218 @@ static void write_figure(FILE *gp, const char *prefix, const char *name, const c
     char text[4400];
     fprintf(gp, "set output ");
     snprintf(text, sizeof text, "%s_%s.png", prefix, name);
-    quoted(gp, text);
+    out_gnuplot_path(gp, text);
     fprintf(gp, "\nset title "); /* two lines: the map, the figure */
-    quoted(gp, scene);
+    out_gnuplot_string(gp, scene);
     fprintf(gp, " . \"\\n\" . ");
     snprintf(text, sizeof text, "%s (%d start%s per point)", title, repeat, repeat > 1 ? "s" : "");
-    quoted(gp, text);
+    out_gnuplot_string(gp, text);
     fprintf(gp, "\nplot grid using 1:2:%d with image notitle", column);
     if (marks)
         fprintf(gp, ", \\\n     marks using 1:2 with points pt 7 ps 1.3 lc rgb 'white' notitle, \\\n"
-                    "     marks using 1:2 with points pt 6 ps 1.3 lc rgb 'black' notitle, \\\n"
-                    "     marks using 1:2:3 with labels left offset 0.9,0.5 tc rgb 'black' font ',10' notitle");
+                    "     marks using 1:2 with points pt 6 ps 1.3 lc rgb 'black' notitle");
     fputc('\n', gp);
 }
 
-static int run_gnuplot(const char *script)
+/* The gnuplot on PATH, into found; 0, or -1 if there is none. */
+static int find_gnuplot(char *found, size_t size)
 {
-    int status;
-    const pid_t pid = fork();
-    if (pid == 0) {
-        execlp("gnuplot", "gnuplot", script, (char *)NULL);
-        fprintf(stderr, "beamslider: error: cannot run gnuplot: %s (Debian: apt-get install gnuplot-nox)\n",
-                strerror(errno));
-        _exit(127);
+    const char *path = getenv("PATH");
+    const char *at = path && *path ? path : "/usr/bin:/bin";
+    while (*at) {
+        const size_t n = strcspn(at, ":");
+        snprintf(found, size, "%.*s%sgnuplot", (int)n, at, n ? "/" : "./");
+        if (access(found, X_OK) == 0)
+            return 0;
+        at += n + (at[n] == ':');
     }
-    if (pid < 0 || waitpid(pid, &status, 0) != pid)
+    return -1;
+}
+
+/* Runs program (gnuplot) on script. 0; -1 after reporting why: it could not
+ * be started (the child tells the exec's errno through a pipe that a
+ * successful exec closes), or it failed (its messages went to stderr). */
+static int run_gnuplot(const char *program, const char *script)
+{
+    char argument[4400];
+    int status, report[2], why = 0;
+    pid_t pid;
+
+    /* a script named -x.gp would be read as an option */
+    snprintf(argument, sizeof argument, "%s%s", script[0] == '/' ? "" : "./", script);
+    if (pipe(report) != 0) {
+        cli_error("cannot start gnuplot: %s", strerror(errno));
         return -1;
-    return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? 0 : -1;
+    }
+    if (fcntl(report[1], F_SETFD, FD_CLOEXEC) != 0) {
+        cli_error("cannot start gnuplot: %s", strerror(errno));
+        close(report[0]);
+        close(report[1]);
+        return -1;
+    }
+    fflush(stdout);
+    fflush(stderr);
+    pid = fork();
+    if (pid == 0) {
+        close(report[0]);
+        execl(program, "gnuplot", argument, (char *)NULL);
+        why = errno;
+        _exit(write(report[1], &why, sizeof why) == (ssize_t)sizeof why ? 127 : 126);
+    }
+    close(report[1]);
+    if (pid < 0) {
+        cli_error("cannot start gnuplot: %s", strerror(errno));
+        close(report[0]);
+        return -1;
+    }
+    if (read(report[0], &why, sizeof why) != (ssize_t)sizeof why)
+        why = 0;
+    close(report[0]);
+    if (waitpid(pid, &status, 0) != pid) {
+        cli_error("gnuplot %s: cannot wait for it: %s", argument, strerror(errno));
+        return -1;
+    }
+    if (why) {
+        cli_error("cannot run %s: %s", program, strerror(why));
+        return -1;
+    }
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        cli_error("gnuplot %s failed (%s %d; its messages are above)", argument,
+                  WIFEXITED(status) ? "exit status" : "signal",
+                  WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status));
+        return -1;
+    }
+    return 0;
+}
+
+/* Writes the script to path: every text through the gnuplot writer. 0, or -1. */
+static int write_script(const char *path, const plot_cli *cli, const map_grid *grid, int vx, int vy,
+                        const char *prefix, const char *scene, const int *has, const double *mark_x,
+                        const double *mark_y, char mark_label[][160])
+{
+    static const char *const class_colour[OUTCOME_CLASSES] = { "#2ca02c", "#1f77b4", "#ff7f0e", "#b0b0b0",
+                                                               "#8c564b", "#d62728", "#e377c2" };
+    char text[4400], label[160];
+    FILE *out = fopen(path, "w");
+    int k, failed;
+
+    if (!out)
+        return -1;
+    snprintf(text, sizeof text, "written by beamslider map-plot %s (docs/maps.md); run: gnuplot %s", cli->dir, path);
+    out_gnuplot_comment(out, text);
+    fprintf(out, "set terminal pngcairo size 1000,700 font 'sans,11' noenhanced\n");
+    fprintf(out, "grid = ");
+    snprintf(text, sizeof text, "%s.dat", prefix);
+    out_gnuplot_path(out, text);
+    fprintf(out, "\nmarks = ");
+    snprintf(text, sizeof text, "%s_marks.dat", prefix);
+    out_gnuplot_path(out, text);
+    fprintf(out, "\nset datafile missing 'NaN'\nset xrange [-0.5:%d.5]\nset yrange [-0.5:%d.5]\n",
+            grid->vary[vx].count - 1, grid->vary[vy].count - 1);
+    write_tics(out, "x", &grid->vary[vx]);
+    write_tics(out, "y", &grid->vary[vy]);
+    axis_label(&grid->vary[vx], label, sizeof label);
+    fprintf(out, "set xlabel ");
+    out_gnuplot_string(out, label);
+    axis_label(&grid->vary[vy], label, sizeof label);
+    fprintf(out, "\nset ylabel ");
+    out_gnuplot_string(out, label);
+    fprintf(out, "\nset tics out nomirror\nset rmargin 24\n");
+    for (k = 0; k < cli->mark_count; ++k) {
+        fprintf(out, "set label %d ", k + 1);
+        out_gnuplot_string(out, mark_label[k]);
+        fprintf(out, " at %.6g,%.6g left offset 0.9,0.5 tc rgb 'black' font ',10' front\n", mark_x[k], mark_y[k]);
+    }
+    fprintf(out, "set palette maxcolors %d\nset palette defined (", OUTCOME_CLASSES);
+    for (k = 0; k < OUTCOME_CLASSES; ++k)
+        fprintf(out, "%s%d '%s'", k ? ", " : "", k, class_colour[k]);
+    fprintf(out, ")\nset cbrange [-0.5:%d.5]\nset cbtics (", OUTCOME_CLASSES - 1);
+    for (k = 0; k < OUTCOME_CLASSES; ++k) {
+        fprintf(out, "%s", k ? ", " : "");
+        out_gnuplot_string(out, outcome_label((outcome_class)k));
+        fprintf(out, " %d", k);
+    }
+    fprintf(out, ")\n");
+    write_figure(out, prefix, "outcome", "outcome class: the class most starts ended in", 3, scene, grid->repeat, cli->mark_count > 0);
+    fprintf(out, "set palette maxcolors 0\nset palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21908d', "
+                 "0.75 '#5dc863', 1 '#fde725')\nset cbtics auto\n");
+    fprintf(out, "set cbrange [0:1]\nset cblabel 'fraction of the starts'\n");
+    write_figure(out, prefix, "agreement", "agreement: the fraction of the starts in that class", 4, scene,
+                 grid->repeat, cli->mark_count > 0);
+    fprintf(out, "set cbrange [*:*]\nset cblabel 's = x_C / L'\n");
+    write_figure(out, prefix, "s_final", "final position s_final: last 10 s, mean of the starts", 5, scene,
+                 grid->repeat, cli->mark_count > 0);
+    fprintf(out, "set cblabel 'standard deviation of s_final'\n");
+    if (has[FIG_SPREAD])
+        write_figure(out, prefix, "s_spread", "spread of s_final: standard deviation over the starts", 6, scene,
+                     grid->repeat, cli->mark_count > 0);
+    fprintf(out, "set cblabel 'w(4L/7) / h'\n");
+    write_figure(out, prefix, "amp_h", "settled amplitude amp_h: last 10 s, mean of the starts", 7, scene,
+                 grid->repeat, cli->mark_count > 0);
+    if (has[FIG_POWER]) {
+        fprintf(out, "set cblabel 'W'\n");
+        write_figure(out, prefix, "power", "harvested power: last 10 s, mean of the starts", 8, scene,
+                     grid->repeat, cli->mark_count > 0);
+    }
+    failed = ferror(out) != 0;
+    failed |= fclose(out) != 0;
+    return failed ? -1 : 0;
+}
+
+/* Writes the grid's cells (one line per cell, a blank line per row of y:
+ * gnuplot's image format) to path, and sets has[figure] when a figure has
+ * a value. 0, or -1. */
+static int write_grid(const char *path, const map_grid *grid, int vx, int vy, const double *cells, int *has)
+{
+    FILE *out = fopen(path, "w");
+    int ix, iy, k, failed;
+    if (!out)
+        return -1;
+    fprintf(out, "# ix iy outcome agreement s_final_mean s_final_sd amp_h_mean power_w_mean\n");
+    for (iy = 0; iy < grid->vary[vy].count; ++iy) {
+        for (ix = 0; ix < grid->vary[vx].count; ++ix) {
+            const double *cell = cells + ((size_t)iy * (size_t)grid->vary[vx].count + (size_t)ix) * FIGURES;
+            fprintf(out, "%d %d", ix, iy);
+            for (k = 0; k < FIGURES; ++k) {
+                fprintf(out, isfinite(cell[k]) ? " %.9g" : " NaN", cell[k]);
+                has[k] |= isfinite(cell[k]) != 0;
+            }
+            fputc('\n', out);
+        }
+        fputc('\n', out);
+    }
+    failed = ferror(out) != 0;
+    failed |= fclose(out) != 0;
+    return failed ? -1 : 0;
+}
+
+/* The --mark points in grid positions (their labels are in the script). 0, or -1. */
+static int write_marks(const char *path, const double *mark_x, const double *mark_y, int count)
+{
+    FILE *out = fopen(path, "w");
+    int k, failed;
+    if (!out)
+        return -1;
+    fprintf(out, "# x y: the --mark points in grid positions\n");
+    for (k = 0; k < count; ++k)
+        fprintf(out, "%.6g %.6g\n", mark_x[k], mark_y[k]);
+    failed = ferror(out) != 0;
+    failed |= fclose(out) != 0;
+    return failed ? -1 : 0;
 }
 
 int cli_map_plot(int argc, char **argv)
 {
-    static const char *const class_colour[OUTCOME_CLASSES] = { "#2ca02c", "#1f77b4", "#ff7f0e", "#b0b0b0",
-                                                               "#8c564b", "#d62728", "#e377c2" };
     plot_cli cli;
     map_grid grid;
-    char err[2048], scene[SCENE_TEXT], prefix[4200], path[4300], label[160];
+    char err[2048], scene[SCENE_TEXT], prefix[4200], path[4300], gnuplot[4200];
     int at_index[MAP_MAX_VARY];
     double mark_x[MAX_MARKS], mark_y[MAX_MARKS];
     char mark_label[MAX_MARKS][160];
     double *cells = NULL;
     int has[FIGURES] = { 0 }; /* figures with a value to draw (a spread needs two starts) */
-    int vx, vy, v, k, ix, iy, status = CLI_USAGE;
-    FILE *out;
+    int vx, vy, v, k, status = CLI_USAGE;
+    size_t n_cells, c;
 
     if (argc >= 1 && (!strcmp(argv[0], "--help") || !strcmp(argv[0], "-h"))) {
         fputs(plot_usage, stdout);
@@ -275,6 +451,20 @@ int cli_map_plot(int argc, char **argv)
     }
     if (parse_options(argc, argv, &cli) != 0)
         return CLI_USAGE;
+    if (strlen(cli.prefix ? cli.prefix : cli.dir) > 4000) {
+        cli_error("%s: too long a name for the pictures; name them with --out PREFIX",
+                  cli.prefix ? "--out" : cli.dir);
+        return CLI_USAGE;
+    }
+    if (cli.prefix)
+        snprintf(prefix, sizeof prefix, "%s", cli.prefix);
+    else
+        snprintf(prefix, sizeof prefix, "%s/plot", cli.dir);
+    if (!out_gnuplot_path_ok(prefix)) {
+        cli_error("%s: the pictures' names would hold a control character (a line break?); %s",
+                  cli.prefix ? "--out" : cli.dir, cli.prefix ? "choose another PREFIX" : "name them with --out PREFIX");
+        return CLI_USAGE;
+    }
     if (map_identity_read(cli.dir, &grid, scene, err, sizeof err) != 0) {
         cli_error("%s", err);
         return CLI_USAGE;
@@ -315,18 +505,7 @@ int cli_map_plot(int argc, char **argv)
             }
             at_index[v] = 0;
         }
-    cells = malloc((size_t)grid.vary[vx].count * (size_t)grid.vary[vy].count * FIGURES * sizeof *cells);
-    if (!cells) {
-        cli_error("out of memory");
-        goto done;
-    }
-    for (k = 0; k < grid.vary[vx].count * grid.vary[vy].count * FIGURES; ++k)
-        cells[k] = (double)NAN;
-    if (read_table(cli.dir, &grid, vx, vy, at_index, cells) != 0) {
-        status = CLI_FAILED;
-        goto done;
-    }
-    for (k = 0; k < cli.mark_count; ++k) { /* checked before anything is written */
+    for (k = 0; k < cli.mark_count; ++k) { /* checked before anything is read or written */
         char x[64], y[64];
         if (sscanf(cli.mark[k], "%63[^,],%63[^,],%159[^\n]", x, y, mark_label[k]) != 3
             || (mark_x[k] = position_of(&grid.vary[vx], x)) < 0 || (mark_y[k] = position_of(&grid.vary[vy], y)) < 0) {
@@ -335,123 +514,41 @@ int cli_map_plot(int argc, char **argv)
             goto done;
         }
     }
-    snprintf(prefix, sizeof prefix, "%s", cli.prefix ? cli.prefix : "");
-    if (!cli.prefix)
-        snprintf(prefix, sizeof prefix, "%s/plot", cli.dir);
-
-    /* the grid */
+    /* the grid's points bound the two counts (MAP_MAX_CASES): no overflow */
+    n_cells = (size_t)grid.vary[vx].count * (size_t)grid.vary[vy].count;
+    cells = malloc(n_cells * FIGURES * sizeof *cells);
+    if (!cells) {
+        cli_error("out of memory for %lu cells", (unsigned long)n_cells);
+        status = CLI_FAILED;
+        goto done;
+    }
+    for (c = 0; c < n_cells * FIGURES; ++c)
+        cells[c] = (double)NAN;
+    if (read_table(cli.dir, &grid, vx, vy, at_index, cells) != 0)
+        goto done; /* CLI_USAGE: the folder is bad input */
+    status = CLI_FAILED; /* from here on, what fails is the work */
+    if (find_gnuplot(gnuplot, sizeof gnuplot) != 0) {
+        cli_error("gnuplot is not installed (no gnuplot on PATH; Debian: apt-get install gnuplot-nox): "
+                  "no picture drawn, nothing written");
+        goto done;
+    }
     snprintf(path, sizeof path, "%s.dat", prefix);
-    if (!(out = fopen(path, "w"))) {
+    if (write_grid(path, &grid, vx, vy, cells, has) != 0) {
         cli_error("cannot write %s: %s", path, strerror(errno));
-        status = CLI_FAILED;
         goto done;
     }
-    fprintf(out, "# ix iy outcome agreement s_final_mean s_final_sd amp_h_mean power_w_mean\n");
-    for (iy = 0; iy < grid.vary[vy].count; ++iy) {
-        for (ix = 0; ix < grid.vary[vx].count; ++ix) {
-            const double *cell = cells + ((long)iy * grid.vary[vx].count + ix) * FIGURES;
-            fprintf(out, "%d %d", ix, iy);
-            for (k = 0; k < FIGURES; ++k)
-                fprintf(out, isfinite(cell[k]) ? " %.9g" : " NaN", cell[k]);
-            fputc('\n', out);
-            for (k = 0; k < FIGURES; ++k)
-                has[k] |= isfinite(cell[k]) != 0;
-        }
-        fputc('\n', out);
-    }
-    if (fclose(out) != 0) {
-        cli_error("cannot write %s", path);
-        status = CLI_FAILED;
-        goto done;
-    }
-    /* the marks: grid positions and labels */
     snprintf(path, sizeof path, "%s_marks.dat", prefix);
-    if (!(out = fopen(path, "w"))) {
+    if (write_marks(path, mark_x, mark_y, cli.mark_count) != 0) {
         cli_error("cannot write %s: %s", path, strerror(errno));
-        status = CLI_FAILED;
         goto done;
     }
-    for (k = 0; k < cli.mark_count; ++k) {
-        fprintf(out, "%.6g %.6g ", mark_x[k], mark_y[k]);
-        quoted(out, mark_label[k]);
-        fputc('\n', out);
-    }
-    if (fclose(out) != 0) {
-        cli_error("cannot write %s", path);
-        status = CLI_FAILED;
-        goto done;
-    }
-
-    /* the script */
     snprintf(path, sizeof path, "%s.gp", prefix);
-    if (!(out = fopen(path, "w"))) {
+    if (write_script(path, &cli, &grid, vx, vy, prefix, scene, has, mark_x, mark_y, mark_label) != 0) {
         cli_error("cannot write %s: %s", path, strerror(errno));
-        status = CLI_FAILED;
         goto done;
     }
-    fprintf(out, "# written by beamslider map-plot %s (docs/maps.md); run: gnuplot %s\n", cli.dir, path);
-    fprintf(out, "set terminal pngcairo size 1000,700 font 'sans,11' noenhanced\n");
-    fprintf(out, "grid = ");
-    snprintf(path, sizeof path, "%s.dat", prefix);
-    quoted(out, path);
-    fprintf(out, "\nmarks = ");
-    snprintf(path, sizeof path, "%s_marks.dat", prefix);
-    quoted(out, path);
-    snprintf(path, sizeof path, "%s.gp", prefix);
-    fputc('\n', out);
-    fprintf(out, "set datafile missing 'NaN'\nset xrange [-0.5:%d.5]\nset yrange [-0.5:%d.5]\n",
-            grid.vary[vx].count - 1, grid.vary[vy].count - 1);
-    write_tics(out, "x", &grid.vary[vx]);
-    write_tics(out, "y", &grid.vary[vy]);
-    axis_label(&grid.vary[vx], label, sizeof label);
-    fprintf(out, "set xlabel ");
-    quoted(out, label);
-    axis_label(&grid.vary[vy], label, sizeof label);
-    fprintf(out, "\nset ylabel ");
-    quoted(out, label);
-    fprintf(out, "\nset tics out nomirror\nset rmargin 24\n");
-    fprintf(out, "set palette maxcolors %d\nset palette defined (", OUTCOME_CLASSES);
-    for (k = 0; k < OUTCOME_CLASSES; ++k)
-        fprintf(out, "%s%d '%s'", k ? ", " : "", k, class_colour[k]);
-    fprintf(out, ")\nset cbrange [-0.5:%d.5]\nset cbtics (", OUTCOME_CLASSES - 1);
-    for (k = 0; k < OUTCOME_CLASSES; ++k) {
-        fprintf(out, "%s", k ? ", " : "");
-        quoted(out, outcome_label((outcome_class)k));
-        fprintf(out, " %d", k);
-    }
-    fprintf(out, ")\n");
-    write_figure(out, prefix, "outcome", "outcome class: the class most starts ended in", 3, scene, grid.repeat,
-                 cli.mark_count > 0);
-    fprintf(out, "set palette maxcolors 0\nset palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21908d', "
-                 "0.75 '#5dc863', 1 '#fde725')\nset cbtics auto\n");
-    fprintf(out, "set cbrange [0:1]\nset cblabel 'fraction of the starts'\n");
-    write_figure(out, prefix, "agreement", "agreement: the fraction of the starts in that class", 4, scene,
-                 grid.repeat, cli.mark_count > 0);
-    fprintf(out, "set cbrange [*:*]\nset cblabel 's = x_C / L'\n");
-    write_figure(out, prefix, "s_final", "final position s_final: last 10 s, mean of the starts",
-                 5, scene, grid.repeat, cli.mark_count > 0);
-    fprintf(out, "set cblabel 'standard deviation of s_final'\n");
-    if (has[FIG_SPREAD])
-        write_figure(out, prefix, "s_spread", "spread of s_final: standard deviation over the starts", 6, scene,
-                     grid.repeat, cli.mark_count > 0);
-    fprintf(out, "set cblabel 'w(4L/7) / h'\n");
-    write_figure(out, prefix, "amp_h", "settled amplitude amp_h: last 10 s, mean of the starts", 7, scene,
-                 grid.repeat, cli.mark_count > 0);
-    if (has[FIG_POWER]) {
-        fprintf(out, "set cblabel 'W'\n");
-        write_figure(out, prefix, "power", "harvested power: last 10 s, mean of the starts", 8, scene, grid.repeat,
-                     cli.mark_count > 0);
-    }
-    if (fclose(out) != 0) {
-        cli_error("cannot write %s", path);
-        status = CLI_FAILED;
+    if (run_gnuplot(gnuplot, path) != 0)
         goto done;
-    }
-    if (run_gnuplot(path) != 0) {
-        cli_error("gnuplot %s failed (is gnuplot installed? Debian: apt-get install gnuplot-nox)", path);
-        status = CLI_FAILED;
-        goto done;
-    }
     fprintf(stderr, "map-plot: wrote %s_{outcome,agreement,s_final%s,amp_h%s}.png\n", prefix,
             has[FIG_SPREAD] ? ",s_spread" : "", has[FIG_POWER] ? ",power" : "");
     status = CLI_OK;

@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include "cli.h"
 #include "attached.h"
+#include "out_text.h"
 #include "scene_build.h"
 
 int cli_modes(int argc, char **argv)
@@ -9,7 +10,7 @@ int cli_modes(int argc, char **argv)
     static scene_file file;   /* static: large */
     static bs_scene scene;
     static scene_model model;
-    char err[1024];
+    char err[1024], name[SCENE_TEXT], path[SCENE_PATH];
     int k;
 
     if (argc != 1) {
@@ -20,8 +21,11 @@ int cli_modes(int argc, char **argv)
         cli_error("%s", err);
         return CLI_USAGE;
     }
+    /* the table's comment lines stay one line each, whatever the names hold */
+    snprintf(name, sizeof name, "%s", file.params.name);
+    snprintf(path, sizeof path, "%s", argv[0]);
     printf("# scene %s (%s): %d modes, kappa = k_r L/EI = %.6g, b = %.6g mm, k_ax = %.6g N/m\n",
-           file.params.name, argv[0], model.modes.n, model.kappa, 1e3 * model.width,
+           out_text_one_line(name), out_text_one_line(path), model.modes.n, model.kappa, 1e3 * model.width,
            model.modes.k_axial_total);
     printf("# mode shapes: %d polynomial pieces of degree %d, relative error %.2g (phi), %.2g (slope)\n",
            model.fit.pieces, BS_SHAPE_COEFS - 1, model.fit.error_phi, model.fit.error_slope);

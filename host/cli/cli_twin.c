@@ -29,6 +29,9 @@
 #include "bs_platform.h"
 #include "cli.h"
 #include "observer_design.h"
+#include "out_c.h"
+#include "out_json.h"
+#include "out_text.h"
 #include "scene_build.h"
 
 #define MAX_SETS 16
@@ -152,7 +155,14 @@ static int parse_valued(twin_cli *c, const char *option, const char *value)
     double x;
     if (!strcmp(option, "--out")) c->out_path = value;
     else if (!strcmp(option, "--measured")) c->measured_path = value;
-    else if (!strcmp(option, "--name")) c->name = value;
+    else if (!strcmp(option, "--name")) {
+        char err[512];
+        if (out_c_identifier_check(value, option, err, sizeof err) != 0) {
+            cli_error("%s", err);
+            return -1;
+        }
+        c->name = value;
+    }
     else if (!strcmp(option, "--signal")) {
         if (parse_signal(value, &c->signal) != 0) {
             cli_error("--signal %s: allowed: deflection, voltage", value);
@@ -379,6 +389,7 @@ static int cli_twin_plant(int argc, char **argv)
     twin_cli c;
     plant_stats stats;
     cli_output output;
+    char plant[SCENE_TEXT];
     double y_noise, a_noise, a_snr;
     uint64_t steps;
     int status, failed;
@@ -408,6 +419,8 @@ static int cli_twin_plant(int argc, char **argv)
     a_noise = isinf(a_snr) ? 0.0 : sqrt(stats.a_sq / (double)steps) * pow(10.0, -a_snr / 20.0);
     output.option = "--out";
     output.path = c.out_path;
+    snprintf(plant, sizeof plant, "%s", file.params.name);
+    out_text_one_line(plant); /* a line break in the name would forge header lines */
     if ((status = cli_open_outputs(&output, 1, &file)) != CLI_OK)
         return status;
     failed = fprintf(output.file,
@@ -416,17 +429,27 @@ static int cli_twin_plant(int argc, char **argv)
                      "# sample_rate = %.12g Hz\n# signal = %s\n# signal_unit = %s\n# base_accel_unit = m/s^2\n"
                      "# latency = %.9g s\n# noise = %.9g %s\n# accel_noise = %.9g m/s^2\n"
                      "t,base_accel,signal,s_true\n",
-                     file.params.name, file.params.s0, c.freq_scale, c.snr, a_snr, c.bits, c.seed,
+                     plant, file.params.s0, c.freq_scale, c.snr, a_snr, c.bits, c.seed,
                      1.0 / file.params.dt, c.signal == BS_SIGNAL_VOLTAGE ? "voltage" : "deflection",
                      c.signal == BS_SIGNAL_VOLTAGE ? "V" : "m", (double)latency_steps(&c, file.params.dt) * file.params.dt,
                      fmax(y_noise, 1e-30), c.signal == BS_SIGNAL_VOLTAGE ? "V" : "m", a_noise) < 0;
     failed = failed || plant_pass(&scene, &file, &c, steps, &stats, output.file, y_noise, a_noise) != 0;
     if (cli_close_output(c.out_path, output.file, failed ? errno : 0) != 0 || failed)
         return CLI_FAILED;
-    printf("{\"plant\":\"%s\",\"steps\":%llu,\"signal_rms\":%.6g,\"noise\":%.6g,\"accel_rms\":%.6g,"
-           "\"accel_noise\":%.6g}\n",
-           file.params.name, (unsigned long long)steps, sqrt(stats.y_sq / (double)steps), y_noise,
-           sqrt(stats.a_sq / (double)steps), a_noise);
+    {
+        out_json j;
+        out_json_start(&j);
+        out_json_text(&j, "plant", file.params.name);
+        out_json_count(&j, "steps", (unsigned long long)steps);
+        out_json_number(&j, "signal_rms", "%.6g", sqrt(stats.y_sq / (double)steps));
+        out_json_number(&j, "noise", "%.6g", y_noise);
+        out_json_number(&j, "accel_rms", "%.6g", sqrt(stats.a_sq / (double)steps));
+        out_json_number(&j, "accel_noise", "%.6g", a_noise);
+        if (out_json_finish(&j, stdout) != 0) {
+            cli_error("cannot write the summary (out of memory?)");
+            return CLI_FAILED;
+        }
+    }
     return CLI_OK;
 }
 
@@ -667,32 +690,31 @@ static int run_twin(const twin_cli *c, const bs_scene *scene, const scene_file *
     return row < 0 ? -1 : 0;
 }
 
-/* A JSON number, or null for NaN (no s_true in the file, nothing scored). */
-static void print_number(const char *key, double value, const char *format)
-{
-    printf(",\"%s\":", key);
-    if (isnan(value))
-        printf("null");
-    else
-        printf(format, value);
-}
-
-static void print_summary(const twin_cli *c, const scene_file *file, const bs_observer_gains *gains,
-                          const twin_tally *tally, double noise)
+/* The summary through the JSON writer (out_json.h: NaN as null, such as
+ * s_true without truth in the file, or within when nothing was scored). */
+static int print_summary(const twin_cli *c, const scene_file *file, const bs_observer_gains *gains,
+                         const twin_tally *tally, double noise)
 {
     const int scored = tally->scored > 0;
-    printf("{\"scene\":\"%s\",\"signal\":\"%s\",\"rows\":%llu,\"noise\":%.6g,\"latency_steps\":%d,"
-           "\"beam_correction\":%d,\"position_correction\":%d,\"rms_innovation\":%.6g,\"s_final\":%.6f,"
-           "\"s_sigma_final\":%.4g",
-           file->params.name, c->signal ? "voltage" : "deflection", (unsigned long long)tally->rows, noise,
-           gains->latency, !c->open_loop, !c->open_loop && !c->no_position,
-           tally->rows ? sqrt(tally->innovation_sq / (double)tally->rows) : 0.0, (double)tally->last.s,
-           (double)tally->last.s_sigma);
-    print_number("s_true_final", tally->s_true, "%.6f");
-    printf(",\"score_after\":%g,\"tolerance\":%g", c->score_after, c->tolerance);
-    print_number("within", scored ? (double)tally->within / (double)tally->scored : (double)NAN, "%.4f");
-    print_number("rms_s_error", scored ? sqrt(tally->error_sq / (double)tally->scored) : (double)NAN, "%.6g");
-    printf(",\"wall_s\":%.3f}\n", tally->elapsed);
+    out_json j;
+    out_json_start(&j);
+    out_json_text(&j, "scene", file->params.name);
+    out_json_text(&j, "signal", c->signal ? "voltage" : "deflection");
+    out_json_count(&j, "rows", (unsigned long long)tally->rows);
+    out_json_number(&j, "noise", "%.6g", noise);
+    out_json_int(&j, "latency_steps", gains->latency);
+    out_json_int(&j, "beam_correction", !c->open_loop);
+    out_json_int(&j, "position_correction", !c->open_loop && !c->no_position);
+    out_json_number(&j, "rms_innovation", "%.6g", tally->rows ? sqrt(tally->innovation_sq / (double)tally->rows) : 0.0);
+    out_json_number(&j, "s_final", "%.6f", (double)tally->last.s);
+    out_json_number(&j, "s_sigma_final", "%.4g", (double)tally->last.s_sigma);
+    out_json_number(&j, "s_true_final", "%.6f", tally->s_true);
+    out_json_number(&j, "score_after", "%g", c->score_after);
+    out_json_number(&j, "tolerance", "%g", c->tolerance);
+    out_json_number(&j, "within", "%.4f", scored ? (double)tally->within / (double)tally->scored : (double)NAN);
+    out_json_number(&j, "rms_s_error", "%.6g", scored ? sqrt(tally->error_sq / (double)tally->scored) : (double)NAN);
+    out_json_number(&j, "wall_s", "%.3f", tally->elapsed);
+    return out_json_finish(&j, stdout);
 }
 
 static int cli_twin_run(int argc, char **argv)
@@ -748,7 +770,10 @@ static int cli_twin_run(int argc, char **argv)
     fclose(m.in);
     if (cli_close_output(c.out_path, output.file, 0) != 0)
         failed = 1;
-    print_summary(&c, &file, &gains, &tally, noise);
+    if (print_summary(&c, &file, &gains, &tally, noise) != 0) {
+        cli_error("cannot write the summary (out of memory?)");
+        failed = 1;
+    }
     return failed ? CLI_FAILED : CLI_OK;
 }
 

@@ -8,8 +8,6 @@
 #include <string.h>
 #include "scene_values.h"
 
-#define MAP_MAX_VALUES 100000 /* values of one field */
-
 void map_grid_init(map_grid *grid)
 {
     memset(grid, 0, sizeof *grid);
@@ -73,21 +71,61 @@ static int check_value(const scene_file *base, const map_vary *vary, const char 
     return 0;
 }
 
-static int add_value(map_vary *vary, const char *text, const char *spec, char *err, size_t size)
+static void add_value(map_vary *vary, const char *text)
 {
-    int i;
-    for (i = 0; i < vary->count; ++i)
-        if (!strcmp(vary->values[i], text)) {
-            snprintf(err, size, "--vary %s: value %s given twice (a grid point would run twice)", spec, text);
-            return -1;
-        }
     strcpy(vary->values[vary->count++], text);
+}
+
+static int compare_values(const void *a, const void *b)
+{
+    return strcmp(*(const char *const *)a, *(const char *const *)b);
+}
+
+/* A value given twice would run a grid point twice: sorted, so that 100 000
+ * values take a moment, not minutes. 0, or -1 with err. */
+static int check_distinct(const map_vary *vary, const char *spec, char *err, size_t size)
+{
+    const char **sorted = malloc((size_t)vary->count * sizeof *sorted);
+    int i, status = 0;
+    if (!sorted) {
+        snprintf(err, size, "--vary %s: out of memory", spec);
+        return -1;
+    }
+    for (i = 0; i < vary->count; ++i)
+        sorted[i] = vary->values[i];
+    qsort(sorted, (size_t)vary->count, sizeof *sorted, compare_values);
+    for (i = 1; i < vary->count && status == 0; ++i)
+        if (!strcmp(sorted[i - 1], sorted[i])) {
+            snprintf(err, size, "--vary %s: value %s given twice (a grid point would run twice)", spec, sorted[i]);
+            status = -1;
+        }
+    free(sorted);
+    return status;
+}
+
+/* The grid points of the fields varied so far times count, checked against
+ * MAP_MAX_CASES before any value is allocated or checked. 0, or -1 with err. */
+static int check_points(const map_grid *grid, const char *spec, double count, char *err, size_t size)
+{
+    double points = count;
+    int v;
+    for (v = 0; v < grid->vary_count; ++v)
+        points *= grid->vary[v].count;
+    if (count > (double)MAP_MAX_VALUES) {
+        snprintf(err, size, "--vary %s: %.6g values, at most %d a field", spec, count, MAP_MAX_VALUES);
+        return -1;
+    }
+    if (points > (double)MAP_MAX_CASES) {
+        snprintf(err, size, "--vary %s: %.6g grid points with the fields varied before it, more than a map may "
+                 "have (at most %ld cases: grid points times --repeat)", spec, points, MAP_MAX_CASES);
+        return -1;
+    }
     return 0;
 }
 
 /* FROM:TO:STEP into vary's values. */
-static int parse_range(const scene_file *base, map_vary *vary, const char *spec, const char *text, char *err,
-                       size_t size)
+static int parse_range(const map_grid *grid, const scene_file *base, map_vary *vary, const char *spec,
+                       const char *text, char *err, size_t size)
 {
     const char *colon1 = strchr(text, ':');
     const char *colon2 = colon1 ? strchr(colon1 + 1, ':') : NULL;
@@ -122,11 +160,13 @@ static int parse_range(const scene_file *base, map_vary *vary, const char *spec,
         return -1;
     }
     intervals = (to - from) / step;
-    n = (long)floor(intervals + 0.5);
-    if (intervals + 1.0 > (double)MAP_MAX_VALUES) {
-        snprintf(err, size, "--vary %s: %.0f values, at most %d a field", spec, intervals + 1.0, MAP_MAX_VALUES);
+    if (!(intervals + 1.0 <= (double)MAP_MAX_VALUES)) { /* before it becomes a count: 1:1e300:1e-300 is inf */
+        snprintf(err, size, "--vary %s: %.6g values, at most %d a field", spec, intervals + 1.0, MAP_MAX_VALUES);
         return -1;
     }
+    n = (long)floor(intervals + 0.5);
+    if (check_points(grid, spec, (double)n + 1.0, err, size) != 0)
+        return -1;
     if (n < 1 || fabs(intervals - (double)n) > 1e-9 * (double)n) {
         snprintf(err, size, "--vary %s: STEP does not divide TO - FROM = %g (%.6g steps); choose TO on the grid",
                  spec, to - from, intervals);
@@ -142,28 +182,26 @@ static int parse_range(const scene_file *base, map_vary *vary, const char *spec,
         char canonical[MAP_VALUE];
         /* 12 digits: FROM + i STEP as the user means it (0.1 * 3 is 0.30000000000000004) */
         snprintf(value, sizeof value, "%.12g", i == n ? to : from + (double)i * step);
-        if (check_value(base, vary, spec, value, canonical, err, size) != 0
-            || add_value(vary, canonical, spec, err, size) != 0)
+        if (check_value(base, vary, spec, value, canonical, err, size) != 0)
             return -1;
+        add_value(vary, canonical);
     }
-    return 0;
+    return check_distinct(vary, spec, err, size); /* 12 digits can make two steps one value */
 }
 
 /* v1,v2,... into vary's values. */
-static int parse_list(const scene_file *base, map_vary *vary, const char *spec, const char *text, char *err,
-                      size_t size)
+static int parse_list(const map_grid *grid, const scene_file *base, map_vary *vary, const char *spec,
+                      const char *text, char *err, size_t size)
 {
     const char *at = text;
-    int count = 1;
+    size_t count = 1;
     const char *c;
 
     for (c = text; *c; ++c)
         count += *c == ',';
-    if (count > MAP_MAX_VALUES) {
-        snprintf(err, size, "--vary %s: %d values, at most %d a field", spec, count, MAP_MAX_VALUES);
+    if (check_points(grid, spec, (double)count, err, size) != 0)
         return -1;
-    }
-    vary->values = malloc((size_t)count * sizeof *vary->values);
+    vary->values = malloc(count * sizeof *vary->values);
     if (!vary->values) {
         snprintf(err, size, "--vary %s: out of memory", spec);
         return -1;
@@ -182,11 +220,11 @@ static int parse_list(const scene_file *base, map_vary *vary, const char *spec, 
         }
         memcpy(value, at, length);
         value[length] = '\0';
-        if (check_value(base, vary, spec, value, canonical, err, size) != 0
-            || add_value(vary, canonical, spec, err, size) != 0)
+        if (check_value(base, vary, spec, value, canonical, err, size) != 0)
             return -1;
+        add_value(vary, canonical);
         if (!at[length])
-            return 0;
+            return check_distinct(vary, spec, err, size);
         at += length + 1;
     }
 }
@@ -234,8 +272,8 @@ int map_grid_add(map_grid *grid, const scene_file *base, const char *spec, char 
         snprintf(err, size, "--vary %s: no values (an empty range)", spec);
         return -1;
     }
-    if ((strchr(equals + 1, ':') ? parse_range(base, vary, spec, equals + 1, err, size)
-                                 : parse_list(base, vary, spec, equals + 1, err, size)) != 0) {
+    if ((strchr(equals + 1, ':') ? parse_range(grid, base, vary, spec, equals + 1, err, size)
+                                 : parse_list(grid, base, vary, spec, equals + 1, err, size)) != 0) {
         free(vary->values);
         vary->values = NULL;
         return -1;
@@ -256,8 +294,8 @@ int map_grid_finish(map_grid *grid, int repeat, char *err, size_t size)
     for (v = 0; v < grid->vary_count; ++v)
         points *= grid->vary[v].count;
     if (points * repeat > (double)MAP_MAX_CASES) {
-        snprintf(err, size, "%.0f grid points times %d repeats: more than %ld cases in one map", points, repeat,
-                 MAP_MAX_CASES);
+        snprintf(err, size, "--repeat %d: %.6g grid points times %d repeats, more than a map may have (at most %ld "
+                 "cases)", repeat, points, repeat, MAP_MAX_CASES);
         return -1;
     }
     grid->repeat = repeat;

@@ -19,6 +19,7 @@
 #define MAP_MAX_VARY 6          /* varied fields */
 #define MAP_MAX_CASES 1000000L  /* grid points times repeats */
 #define MAP_MAX_REPEAT 1000
+#define MAP_MAX_VALUES 100000   /* values of one field */
 #define MAP_PERTURBATION 1e-5   /* repeat r starts at s0 + r * 1e-5 */
 #define MAP_VALUE 48            /* a value's canonical text, with its NUL */
 #define MAP_FIELD (2 * SCENE_NAME) /* "section.key" */

@@ -7,6 +7,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,6 +15,7 @@
 #include <unistd.h>
 #include "bs_revision.h"
 #include "map_case.h"
+#include "out_text.h"
 #include "scene_values.h"
 
 #define IDENTITY_FORMAT 1
@@ -48,6 +50,21 @@ static void append(text *t, const char *part)
     t->used += n;
 }
 
+/* "info KEY = VALUE" with VALUE made one line (out_text.h): a name, a path
+ * or a command line may hold a line break, which would forge a line. */
+static void append_info(text *t, const char *key, const char *value)
+{
+    char *line = malloc(strlen(key) + strlen(value) + 10);
+    if (!line) {
+        t->failed = 1;
+        return;
+    }
+    sprintf(line, "info %s = %s", key, value);
+    append(t, out_text_one_line(line));
+    append(t, "\n");
+    free(line);
+}
+
 char *map_identity_text(const map_grid *grid, const scene_file *base, const char *scene_path,
                         const char *command)
 {
@@ -78,17 +95,14 @@ char *map_identity_text(const map_grid *grid, const scene_file *base, const char
         }
         append(&t, "\n");
     }
-    snprintf(line, sizeof line, "info revision = %s\ninfo scene = %s\ninfo scene_file = %s\n", BS_REVISION,
-             base->params.name, scene_path);
+    snprintf(line, sizeof line, "info revision = %s\n", BS_REVISION);
     append(&t, line);
+    append_info(&t, "scene", base->params.name);
+    append_info(&t, "scene_file", scene_path);
     for (i = 0; scene_fields[i].key; ++i)
-        if (base->set_file[i] == SCENE_BY_OPTION) {
-            snprintf(line, sizeof line, "info set = %s\n", base->set_option[i]);
-            append(&t, line);
-        }
-    append(&t, "info command = ");
-    append(&t, command);
-    append(&t, "\n");
+        if (base->set_file[i] == SCENE_BY_OPTION)
+            append_info(&t, "set", base->set_option[i]);
+    append_info(&t, "command", command);
     if (t.failed) {
         free(t.data);
         return NULL;
@@ -284,41 +298,59 @@ static int publish_identity(const char *dir, const char *identity, char *err, si
     return status;
 }
 
+/* Makes dir, or finds it a folder; *created = 1 if this call made it. 0 or
+ * -1 with err. */
+static int make_folder(const char *dir, int *created, char *err, size_t size)
+{
+    struct stat info;
+
+    *created = mkdir(dir, 0777) == 0;
+    if (*created)
+        return 0;
+    if (errno != EEXIST) { /* EEXIST: there already, or another shard made it just now */
+        snprintf(err, size, "--out %s: cannot create the folder: %s", dir, strerror(errno));
+        return -1;
+    }
+    if (stat(dir, &info) != 0 || !S_ISDIR(info.st_mode)) {
+        snprintf(err, size, "--out %s: not a folder", dir);
+        return -1;
+    }
+    return 0;
+}
+
+/* Shards started together race here, so every step allows for another
+ * process having done any of its own since the last look: the folder made
+ * (EEXIST is success), the identity linked (EEXIST: compare with it), and
+ * files beside the identity. A map command makes other files only after the
+ * identity is in place, so a folder that holds files is refused as not a
+ * map's only if it still has no identity after they were seen. */
 int map_dir_claim(const char *dir, const char *identity, char *err, size_t size)
 {
     char path[4200];
-    struct stat info;
     char *there;
-    int created = 0, status;
+    int created, status;
 
     if (strlen(dir) > 4000) {
         snprintf(err, size, "--out %.40s...: path too long", dir);
         return -1;
     }
-    if (stat(dir, &info) != 0) {
-        /* EEXIST: another shard made it just now */
-        if (errno != ENOENT || (mkdir(dir, 0777) != 0 && errno != EEXIST)) {
-            snprintf(err, size, "--out %s: cannot create the folder: %s", dir, strerror(errno));
-            return -1;
-        }
-        created = 1;
-    } else if (!S_ISDIR(info.st_mode)) {
-        snprintf(err, size, "--out %s: not a folder", dir);
+    if (make_folder(dir, &created, err, size) != 0)
         return -1;
-    }
     snprintf(path, sizeof path, "%s/" MAP_IDENTITY_FILE, dir);
     if (access(path, F_OK) != 0) {
-        if (!created && !folder_is_empty(dir)) {
+        if (!created && !folder_is_empty(dir) && access(path, F_OK) != 0) {
             snprintf(err, size, "--out %s: the folder holds files but no " MAP_IDENTITY_FILE ": not a map's "
                      "folder (use a new or an empty folder)", dir);
             return -1;
         }
         status = publish_identity(dir, identity, err, size);
-        if (status <= 0) {
-            if (status < 0 && created)
+        if (status < 0) {
+            if (created)
                 rmdir(dir);
-            return status;
+            return -1;
         }
+        if (status == 0)
+            return 0;
     }
     there = read_all(path);
     if (!there) {
@@ -340,55 +372,151 @@ int map_dir_claim(const char *dir, const char *identity, char *err, size_t size)
     return status;
 }
 
+/* ---- reading an identity back (map-merge, map-plot) ---------------------
+ * The folder is input like any file: its identity may have been edited, by
+ * hand or to attack what is made of it (map-plot writes its scene name and
+ * values into a gnuplot script). Every line is checked for its shape before
+ * anything is taken from it, and refused with its line. */
+
+/* The longest line an identity may hold (info command: a whole command line). */
+#define IDENTITY_LINE 65536
+
+/* One value of a varied field: a number the field takes (REAL, INT), or one
+ * of its choices. */
+static int identity_value_ok(const field_spec *f, const char *value, size_t length)
+{
+    char copy[MAP_VALUE], *end;
+    double x;
+    int k;
+
+    if (length == 0 || length >= MAP_VALUE)
+        return 0;
+    memcpy(copy, value, length);
+    copy[length] = '\0';
+    if (f->kind == FIELD_CHOICE) {
+        for (k = 0; f->choices[k]; ++k)
+            if (!strcmp(copy, f->choices[k]))
+                return 1;
+        return 0;
+    }
+    x = strtod(copy, &end);
+    return end != copy && !*end && isfinite(x) && strspn(copy, "+-.0123456789eE") == length
+           && (f->kind != FIELD_INT || x == floor(x));
+}
+
+/* "vary NAME = v1,v2,..." into the next field of grid; NULL, or what is wrong. */
+static const char *read_vary(map_grid *grid, const char *line, size_t length)
+{
+    const char *list = strstr(line, " = ");
+    const char *at, *end = line + length;
+    map_vary *vary;
+    int field, k, j;
+
+    if (grid->vary_count >= MAP_MAX_VARY)
+        return "more varied fields than a map has";
+    if (!list || list > end || list - line <= 5 || list - line - 5 >= MAP_FIELD)
+        return "expected vary SECTION.KEY = VALUE,VALUE,...";
+    field = scene_field_named(line + 5, (size_t)(list - line) - 5, NULL, NULL);
+    if (field < 0 || scene_fields[field].kind == FIELD_TEXT)
+        return "not a field a map varies";
+    for (k = 0; k < grid->vary_count; ++k)
+        if (grid->vary[k].field == field)
+            return "a field varied twice";
+    vary = &grid->vary[grid->vary_count];
+    memset(vary, 0, sizeof *vary);
+    vary->field = field;
+    snprintf(vary->name, sizeof vary->name, "%.*s", (int)(list - line) - 5, line + 5);
+    list += 3;
+    vary->count = 1;
+    for (at = list; at < end; ++at)
+        if (*at == ',' && ++vary->count > MAP_MAX_VALUES)
+            return "more values than a field may take";
+    vary->values = malloc((size_t)vary->count * sizeof *vary->values);
+    if (!vary->values)
+        return "out of memory";
+    ++grid->vary_count; /* owned by grid from here: map_grid_free frees the values */
+    for (k = 0, at = list; k < vary->count; ++k) {
+        const size_t n = strcspn(at, ",\n");
+        if (!identity_value_ok(&scene_fields[field], at, n))
+            return "a value the field cannot take (a number in its kind, or one of its choices)";
+        snprintf(vary->values[k], MAP_VALUE, "%.*s", (int)n, at);
+        for (j = 0; j < k; ++j)
+            if (!strcmp(vary->values[j], vary->values[k]))
+                return "a value given twice";
+        at += n + 1;
+    }
+    return NULL;
+}
+
 int map_identity_read(const char *dir, map_grid *grid, char *scene, char *err, size_t size)
 {
     char path[4200];
     char *identity;
-    const char *value;
-    size_t length;
-    int n, repeat;
+    const char *line, *why = NULL;
+    long number = 0;
+    int repeat = 0, format = 0;
 
     map_grid_init(grid);
+    snprintf(scene, SCENE_TEXT, "map");
     snprintf(path, sizeof path, "%s/" MAP_IDENTITY_FILE, dir);
     identity = read_all(path);
     if (!identity) {
         snprintf(err, size, "%s: no map here: cannot read %s: %s", dir, path, strerror(errno));
         return -1;
     }
-    value = identity_value(identity, "info scene", 0, &length);
-    snprintf(scene, SCENE_TEXT, "%.*s", value ? (int)length : 4, value ? value : "map");
-    value = identity_value(identity, "repeat", 0, &length);
-    repeat = value ? atoi(value) : 0;
-    for (n = 0; (value = identity_value(identity, "vary", n, &length)) != NULL; ++n) {
-        map_vary *vary = &grid->vary[grid->vary_count];
-        const char *list = strstr(value, " = ");
-        const char *at;
-        int k;
-        if (n >= MAP_MAX_VARY || !list || (size_t)(list - value) >= sizeof vary->name)
-            break;
-        memset(vary, 0, sizeof *vary);
-        snprintf(vary->name, sizeof vary->name, "%.*s", (int)(list - value), value);
-        vary->field = scene_field_named(vary->name, strlen(vary->name), NULL, NULL);
-        list += 3;
-        length -= (size_t)(list - value);
-        vary->count = 1;
-        for (at = list; at < list + length; ++at)
-            vary->count += *at == ',';
-        vary->values = malloc((size_t)vary->count * sizeof *vary->values);
-        if (vary->field < 0 || !vary->values) {
-            free(vary->values);
-            break;
-        }
-        ++grid->vary_count;
-        for (k = 0, at = list; k < vary->count; ++k) {
-            const size_t n_value = strcspn(at, ",\n");
-            snprintf(vary->values[k], MAP_VALUE, "%.*s", (int)n_value, at);
-            at += n_value + 1;
+    for (line = identity; *line && !why; line += strcspn(line, "\n") + 1) {
+        const size_t length = strcspn(line, "\n");
+        size_t i;
+        char *end;
+        ++number;
+        if (line[length] != '\n')
+            why = "the last line has no line end (cut short?)";
+        else if (length > IDENTITY_LINE)
+            why = "line too long";
+        for (i = 0; i < length && !why; ++i)
+            if ((unsigned char)line[i] < 0x20 || line[i] == 0x7f)
+                why = "a control character";
+        if (why || line[0] == '#')
+            continue;
+        if (!strncmp(line, "format = ", 9)) {
+            format = (int)strtol(line + 9, &end, 10);
+            if (end != line + length || format != IDENTITY_FORMAT)
+                why = "a format this version does not read";
+        } else if (!strncmp(line, "repeat = ", 9)) {
+            const long k = strtol(line + 9, &end, 10);
+            if (end != line + length || k < 1 || k > MAP_MAX_REPEAT)
+                why = "repeat is not an integer in [1, " SCENE_TEXT_OF(MAP_MAX_REPEAT) "]";
+            repeat = (int)k;
+        } else if (!strncmp(line, "vary ", 5)) {
+            why = read_vary(grid, line, length);
+        } else if (!strncmp(line, "info scene = ", 13)) {
+            if (length - 13 >= SCENE_TEXT)
+                why = "the scene's name is longer than a scene's name may be";
+            else
+                snprintf(scene, SCENE_TEXT, "%.*s", (int)(length - 13), line + 13);
+        } else if (strncmp(line, "version = ", 10) && strncmp(line, "precision = ", 12)
+                   && strncmp(line, "fields_hash = ", 14) && strncmp(line, "perturbation = ", 15)
+                   && strncmp(line, "info ", 5)) {
+            why = "not a line of an identity";
         }
     }
     free(identity);
-    if (value || map_grid_finish(grid, repeat, err, size) != 0) {
-        snprintf(err, size, "%s: damaged (not written by this version of beamslider map?)", path);
+    if (!why && !format)
+        why = "no format line", number = 0;
+    else if (!why && !repeat)
+        why = "no repeat line", number = 0;
+    if (why) {
+        if (number > 0)
+            snprintf(err, size, "%s:%ld: %s (not as beamslider map writes it: edited or damaged)", path, number, why);
+        else
+            snprintf(err, size, "%s: %s (not as beamslider map writes it: edited or damaged)", path, why);
+        map_grid_free(grid);
+        return -1;
+    }
+    if (map_grid_finish(grid, repeat, err, size) != 0) {
+        char reason[1024];
+        snprintf(reason, sizeof reason, "%s", err);
+        snprintf(err, size, "%s: %s", path, reason);
         map_grid_free(grid);
         return -1;
     }

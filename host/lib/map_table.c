@@ -113,6 +113,116 @@ static void put(FILE *out, const char *format, double value)
         fputs(",nan", out);
 }
 
+/* The result columns of map.csv after the outcome class, in order. */
+static const char *const point_columns[] = { "s_final_mean", "s_final_sd", "s_final_min", "s_final_max",
+                                             "amp_h_mean", "amp_h_sd", "v_last_mean", "v_peak_mean",
+                                             "power_w_mean", "power_w_sd", "unconverged_steps", NULL };
+
+int map_table_points_header(const map_grid *grid, char *out, size_t size)
+{
+    size_t used = (size_t)snprintf(out, size, "point");
+    int k;
+    for (k = 0; k < grid->vary_count && used < size; ++k)
+        used += (size_t)snprintf(out + used, size - used, ",%s", grid->vary[k].name);
+    if (used < size)
+        used += (size_t)snprintf(out + used, size - used, ",repeats,outcome,agreement");
+    for (k = 0; k < OUTCOME_CLASSES && used < size; ++k)
+        used += (size_t)snprintf(out + used, size - used, ",frac_%s", outcome_name((outcome_class)k));
+    for (k = 0; point_columns[k] && used < size; ++k)
+        used += (size_t)snprintf(out + used, size - used, ",%s", point_columns[k]);
+    return used < size ? 0 : -1;
+}
+
+/* A number column of map.csv: a finite number or nan, nothing else. */
+static int number_column(const char *text, size_t length, double *value)
+{
+    char copy[64], *end;
+    if (length == 3 && !strncmp(text, "nan", 3)) {
+        *value = (double)NAN;
+        return 0;
+    }
+    if (length == 0 || length >= sizeof copy || strspn(text, "+-.0123456789eE") < length)
+        return -1;
+    memcpy(copy, text, length);
+    copy[length] = '\0';
+    *value = strtod(copy, &end);
+    return *end || !isfinite(*value) ? -1 : 0;
+}
+
+int map_table_point_parse(const map_grid *grid, long point, const char *line, map_point_figures *figures,
+                          char *why, size_t size)
+{
+    const char *at = line;
+    double fraction[OUTCOME_CLASSES + 1], number[sizeof point_columns / sizeof *point_columns - 1];
+    const int columns = 1 + grid->vary_count + 3 + OUTCOME_CLASSES
+                        + (int)(sizeof point_columns / sizeof *point_columns) - 1;
+    size_t n;
+    char *end;
+    int k, c, count = 1;
+
+    for (n = 0; line[n]; ++n)
+        count += line[n] == ',';
+    if (count != columns) {
+        snprintf(why, size, "%d columns, the header has %d", count, columns);
+        return -1;
+    }
+    n = strcspn(at, ",");
+    if (strtol(at, &end, 10) != point || end != at + n || n == 0 || *at == '-' || *at == '+') {
+        snprintf(why, size, "expected the row of grid point %ld (rows in point order, one each)", point);
+        return -1;
+    }
+    at += n + (at[n] == ',');
+    for (k = 0; k < grid->vary_count; ++k) {
+        const char *value = grid->vary[k].values[map_point_value(grid, point, k)];
+        n = strcspn(at, ",");
+        if (n != strlen(value) || strncmp(at, value, n) || !at[n]) {
+            snprintf(why, size, "expected %s = %s at grid point %ld", grid->vary[k].name, value, point);
+            return -1;
+        }
+        at += n + 1;
+    }
+    n = strcspn(at, ",");
+    if (strtol(at, &end, 10) != grid->repeat || end != at + n || !at[n]) {
+        snprintf(why, size, "expected %d repeats (the identity's)", grid->repeat);
+        return -1;
+    }
+    at += n + 1;
+    n = strcspn(at, ",");
+    for (figures->outcome = 0; figures->outcome < OUTCOME_CLASSES; ++figures->outcome)
+        if (n == strlen(outcome_name((outcome_class)figures->outcome))
+            && !strncmp(at, outcome_name((outcome_class)figures->outcome), n))
+            break;
+    if (figures->outcome == OUTCOME_CLASSES || !at[n]) {
+        snprintf(why, size, "the outcome is not a class name (docs/maps.md section 2)");
+        return -1;
+    }
+    at += n + 1;
+    for (k = 0; k <= OUTCOME_CLASSES; ++k) { /* agreement, then each class's fraction */
+        n = strcspn(at, ",");
+        if (number_column(at, n, &fraction[k]) != 0 || !(fraction[k] >= 0.0 && fraction[k] <= 1.0) || !at[n]) {
+            snprintf(why, size, "column %s is not a fraction in [0, 1]",
+                     k ? "frac_..." : "agreement");
+            return -1;
+        }
+        at += n + 1;
+    }
+    for (c = 0; point_columns[c]; ++c) {
+        n = strcspn(at, ",");
+        if (number_column(at, n, &number[c]) != 0) {
+            snprintf(why, size, "column %s is not a number (or nan)", point_columns[c]);
+            return -1;
+        }
+        at += n + (at[n] == ',');
+    }
+    figures->point = point;
+    figures->agreement = fraction[0];
+    figures->s_final_mean = number[0];
+    figures->s_final_sd = number[1];
+    figures->amp_h_mean = number[4];
+    figures->power_w_mean = number[8];
+    return 0;
+}
+
 int map_table_points(FILE *out, const map_grid *grid, char *const *row)
 {
     const int base = 3 + grid->vary_count; /* the first result column, s0 */
@@ -127,13 +237,10 @@ int map_table_points(FILE *out, const map_grid *grid, char *const *row)
     long point;
     int k, v;
 
-    fprintf(out, "point");
-    varied_header(out, grid);
-    fprintf(out, ",repeats,outcome,agreement");
-    for (k = 0; k < OUTCOME_CLASSES; ++k)
-        fprintf(out, ",frac_%s", outcome_name((outcome_class)k));
-    fprintf(out, ",s_final_mean,s_final_sd,s_final_min,s_final_max,amp_h_mean,amp_h_sd,v_last_mean,v_peak_mean,"
-                 "power_w_mean,power_w_sd,unconverged_steps\n");
+    char header[MAP_POINTS_HEADER];
+    if (map_table_points_header(grid, header, sizeof header) != 0)
+        return -1;
+    fprintf(out, "%s\n", header);
     for (point = 0; point < grid->points; ++point) {
         int count[OUTCOME_CLASSES];
         spread s, amp, speed, peak, power;

@@ -28,4 +28,25 @@ int map_tables_write(const char *dir, const map_grid *grid, char *const *row, ch
 int map_table_runs(FILE *out, const map_grid *grid, char *const *row);
 int map_table_points(FILE *out, const map_grid *grid, char *const *row);
 
+/* map.csv's header line for grid, without its newline, into out. 0, or -1
+ * if it does not fit size (MAP_POINTS_HEADER always does). */
+#define MAP_POINTS_HEADER 2048
+int map_table_points_header(const map_grid *grid, char *out, size_t size);
+
+/* What map-plot draws of one grid point. */
+typedef struct map_point_figures {
+    long point;
+    int outcome;                  /* outcome_class */
+    double agreement;
+    double s_final_mean, s_final_sd, amp_h_mean, power_w_mean; /* NAN: none */
+} map_point_figures;
+
+/* Reads line (one row of map.csv without its newline), which must be the row
+ * of grid point `point` as map_table_points writes it: the point, its varied
+ * values, the repeats, a class name, fractions in [0, 1], numbers or nan,
+ * and no more columns. map.csv is input to map-plot (a folder can be cut
+ * short or edited), so anything else is refused. 0, or -1 with why. */
+int map_table_point_parse(const map_grid *grid, long point, const char *line, map_point_figures *figures,
+                          char *why, size_t size);
+
 #endif

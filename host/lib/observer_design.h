@@ -67,8 +67,11 @@ int observer_design(const scene_file *file, const scene_model *model, const bs_s
 int observer_linear_step(const scene_data *data, int with_voltage, const double *x, double base_accel,
                          const double *force, double *next);
 
-/* Prints gains as a C header (`beamslider twin-gains`): a static const
- * bs_observer_gains named `name`. Returns 0, or -1 on a write error. */
+/* Prints gains as a C header (`beamslider twin-gains`) through the C writer
+ * (out_c.h): a static const bs_observer_gains named `name` (which must pass
+ * out_c_identifier_check: else -1, nothing written), after a block comment
+ * holding comment (any text). Returns 0, or -1 on a write error or a gain
+ * that is not finite. */
 int observer_print_gains(FILE *out, const bs_observer_gains *gains, const char *name, const char *comment);
 
 #endif

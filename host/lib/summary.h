@@ -1,11 +1,7 @@
-/* summary.h - the one-line JSON summaries `run` and `sweep` print on stdout.
- *
- * Written with cJSON (Debian's libcjson-dev), so that every text (a scene
- * name holding a quote, a backslash or a control character, which the file
- * name can) is escaped and the line is valid JSON. Numbers keep the formats
- * the summaries always had (README.md's example line): each is formatted
- * with its printf format and added as a raw value; a number that is not
- * finite (JSON has no NaN) is written as null.
+/* summary.h - the one-line JSON summaries `run`, `sweep`, `map` and
+ * `map-merge` print on stdout, written by the one JSON writer (out_json.h:
+ * every text escaped and UTF-8, numbers in the formats the summaries always
+ * had (README.md's example line), a number that is not finite as null).
  */
 #ifndef SUMMARY_H
 #define SUMMARY_H
@@ -54,5 +50,10 @@ typedef struct summary_map {
  * repeats), the cases, wall time and cases per second, the fields hash of
  * the map's identity, version and revision. 0 or -1. */
 int summary_print_map(FILE *out, const scene_file *file, const summary_map *map);
+
+/* The summary of map-merge: scene (the identity's name), the grid, the
+ * cases done, the lines ignored, complete, the folder (map->dir), version
+ * and revision. 0 or -1. */
+int summary_print_merge(FILE *out, const char *scene, const summary_map *map);
 
 #endif
