@@ -230,6 +230,7 @@ static void check_detection_against_direct_shapes(const char *path, double defle
         }
         frame.cache = cache;
         frame.reach = bs_shape_reach(&scene);
+        frame.warm = (const bs_real(*)[BS_ROWS])sim.percussion;
         if (bs_contact_detect(&scene, &sim.k, &frame, &set) != BS_OK)
             continue; /* a corner across the beam's axis: no contacts to compare */
         for (corner = 0; corner < BS_CORNERS; ++corner) {

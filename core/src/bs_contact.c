@@ -107,7 +107,8 @@ typedef struct corner_point {
  * set: its phi and phi', the coefficients of its rows' beam parts and their
  * slider parts. d_z = z_P - w - zeta h/2, already found in contact. */
 BS_INLINE void add_corner(const bs_scene *scene, const bs_step_constants *k, const bs_shape_cache *cache, int corner,
-                       bs_real zeta, bs_real d_z, const corner_point *p, bs_contact_set *set)
+                          bs_real zeta, bs_real d_z, const corner_point *p, const bs_real (*warm)[BS_ROWS],
+                          bs_contact_set *set)
 {
     const bs_real hh = k->half_thickness;
     const bs_real w_slope = p->w_slope;
@@ -124,6 +125,10 @@ BS_INLINE void add_corner(const bs_scene *scene, const bs_step_constants *k, con
 
     set->id[a] = corner;
     bs_shape_expanded(scene, cache, p->t, p->on_beam, k->slope_scale, set->phi[a], set->slope[a]);
+    set->percussion[BS_ROWS * a] = warm[corner][0]; /* the warm start: its last percussion */
+#if BS_WITH_FRICTION
+    set->percussion[BS_ROWS * a + 1] = warm[corner][1];
+#endif
     normal = set->dir_slider[BS_ROWS * a];
     normal[0] = n_x;
     normal[1] = n_z;
@@ -209,22 +214,24 @@ BS_INLINE int side_of_slot(const bs_scene *scene, const bs_step_constants *k, co
     if (d_top - hh * top.w_slope * top.w_slope < BS_R(0.0)) {
         if (d_top + hh < BS_R(0.0))
             return 1;
-        add_corner(scene, k, cache, top_id, BS_R(1.0), d_top, &top, set);
+        add_corner(scene, k, cache, top_id, BS_R(1.0), d_top, &top, frame->warm, set);
     }
     if (-d_bottom - hh * bottom.w_slope * bottom.w_slope < BS_R(0.0)) {
         if (-d_bottom + hh < BS_R(0.0))
             return 1;
-        add_corner(scene, k, cache, bottom_id, BS_R(-1.0), d_bottom, &bottom, set);
+        add_corner(scene, k, cache, bottom_id, BS_R(-1.0), d_bottom, &bottom, frame->warm, set);
     }
     return 0;
 }
 
-static void add_stop(int id, bs_real sign, bs_contact_set *set)
+static void add_stop(int id, bs_real sign, const bs_real (*warm)[BS_ROWS], bs_contact_set *set)
 {
     const int a = set->count++;
     int r, c;
 
     set->id[a] = id;
+    for (r = 0; r < BS_ROWS; ++r)
+        set->percussion[BS_ROWS * a + r] = warm[id][r];
 #if BS_WITH_FRICTION
     set->mu[a] = BS_R(0.0);
 #endif
@@ -271,9 +278,9 @@ bs_status bs_contact_detect(const bs_scene *scene, const bs_step_constants *k, c
         return BS_E_ESCAPED;
     if (frame->stops) {
         if (frame->x_stops < k->stop_min)
-            add_stop(BS_STOP_LEFT, BS_R(1.0), set);
+            add_stop(BS_STOP_LEFT, BS_R(1.0), frame->warm, set);
         if (frame->x_stops > k->stop_max)
-            add_stop(BS_STOP_RIGHT, BS_R(-1.0), set);
+            add_stop(BS_STOP_RIGHT, BS_R(-1.0), frame->warm, set);
     }
     return BS_OK;
 }
@@ -406,8 +413,9 @@ static void problem_of_one(const bs_scene *scene, const bs_step_constants *k, bs
     delassus_block(k, set, 0, 0, dot);
 }
 
-/* Two corners in contact (the rest but a few): velocities, self and cross
- * products in one pass. */
+/* Two corners in contact (the rest but a few): velocities in one pass over
+ * the modes, then self and cross products in another (18 sums in one pass
+ * would not fit a Cortex-M4F's 32 registers: they spilled). */
 static void problem_of_two(const bs_scene *scene, const bs_step_constants *k, bs_contact_set *set,
                            const bs_real *u_beam, const bs_real *u_slider, const bs_real *u_beam_before,
                            const bs_real *u_slider_before)
@@ -420,7 +428,6 @@ static void problem_of_two(const bs_scene *scene, const bs_step_constants *k, bs
     bs_real ba[4] = { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) };
     int i;
     for (i = 0; i < BS_NMODES(scene); ++i) {
-        const bs_real gp = MODE_GAIN(k, i) * phi_b[i], gs = MODE_GAIN(k, i) * slope_b[i];
         va.at[0] += phi_a[i] * u_beam[i];
         va.at[1] += slope_a[i] * u_beam[i];
         vb.at[0] += phi_b[i] * u_beam[i];
@@ -431,6 +438,10 @@ static void problem_of_two(const bs_scene *scene, const bs_step_constants *k, bs
         vb.at[2] += phi_b[i] * u_beam_before[i];
         vb.at[3] += slope_b[i] * u_beam_before[i];
 #endif
+    }
+    (void)u_beam_before;
+    for (i = 0; i < BS_NMODES(scene); ++i) {
+        const bs_real gp = MODE_GAIN(k, i) * phi_b[i], gs = MODE_GAIN(k, i) * slope_b[i];
         aa[0] += MODE_GAIN(k, i) * phi_a[i] * phi_a[i];
         aa[1] += MODE_GAIN(k, i) * phi_a[i] * slope_a[i];
         aa[3] += MODE_GAIN(k, i) * slope_a[i] * slope_a[i];
@@ -442,7 +453,6 @@ static void problem_of_two(const bs_scene *scene, const bs_step_constants *k, bs
         ba[2] += gs * phi_a[i];
         ba[3] += gs * slope_a[i];
     }
-    (void)u_beam_before;
     aa[2] = aa[1];
     bb[2] = bb[1];
     free_velocity(k, set, 0, &va, u_slider, u_slider_before);

@@ -19,11 +19,13 @@ typedef struct bs_contact_frame {
     int stops;              /* 1: clamp end stops take part */
     bs_shape_cache *cache;  /* the mode shapes about the left and right corners (2; updated) */
     bs_real reach;          /* of the expansions (bs_shape_reach) */
+    const bs_real (*warm)[BS_ROWS]; /* each contact's last percussion (bs_sim.percussion): the warm start */
 } bs_contact_frame;
 
 /* Finds the contacts with g_N < 0 and fills set->count, id, mu (with
  * friction), phi and phi' at each corner in contact and the coefficients and
- * slider parts of its force directions W (k: the sim's prepared constants).
+ * slider parts of its force directions W (k: the sim's prepared constants),
+ * and set->percussion with their warm starts.
  * Returns BS_OK, or BS_E_ESCAPED when a slot corner is on the wrong side of
  * the beam's axis (the slider has left the beam). */
 bs_status bs_contact_detect(const bs_scene *scene, const bs_step_constants *k, const bs_contact_frame *frame,

@@ -148,71 +148,85 @@ BS_INLINE void prox(const bs_contact_set *set, int a, bs_real step, const bs_rea
 #endif
 }
 
-/* Exact solution of contact a's problem with the other contacts frozen.
- * Returns 1, or 0 when it fell back to the prox update (no candidate held). */
-static int solve_contact(bs_contact_set *set, const bs_real *step, int a)
+/* Contact a's exact solution (the candidates of the header comment) against
+ * v, the velocity of its rows without its own percussion; xi, its velocity
+ * at the present P, is what the prox fall-back steps from. Returns 1, or 0
+ * when it fell back (no candidate held). */
+BS_INLINE int solve_local(bs_contact_set *set, const bs_real *step, int a, const bs_real *xi, const bs_real *v)
 {
     bs_real *p = &set->percussion[ROWS * a];
     const bs_real g_nn = set->delassus[ROWS * a][ROWS * a];
-    bs_real xi[ROWS];
-    bs_real v_n;
-
-    velocity(set, a, xi);
+    const bs_real v_n = v[0];
 #if BS_WITH_FRICTION
-    {
-        const bs_real mu = set->mu[a];
-        const bs_real g_nt = set->delassus[2 * a][2 * a + 1];
-        const bs_real g_tt = set->delassus[2 * a + 1][2 * a + 1];
-        const bs_real v_t = xi[1] - g_nt * p[0] - g_tt * p[1];
-        bs_real det, sign;
-        int attempt;
+    const bs_real mu = set->mu[a];
+    const bs_real g_nt = set->delassus[2 * a][2 * a + 1];
+    const bs_real g_tt = set->delassus[2 * a + 1][2 * a + 1];
+    const bs_real v_t = v[1];
+    bs_real det, sign;
+    int attempt;
 
-        v_n = xi[0] - g_nn * p[0] - g_nt * p[1];
-        if (v_n >= BS_R(0.0)) { /* take-off */
-            p[0] = BS_R(0.0);
-            p[1] = BS_R(0.0);
+    if (v_n >= BS_R(0.0)) { /* take-off */
+        p[0] = BS_R(0.0);
+        p[1] = BS_R(0.0);
+        return 1;
+    }
+    if (mu == BS_R(0.0)) { /* frictionless contact (a stop): normal only */
+        p[0] = -v_n / g_nn;
+        p[1] = BS_R(0.0);
+        return 1;
+    }
+    det = g_nn * g_tt - g_nt * g_nt;
+    if (det > BS_R(0.0)) {
+        const bs_real inverse = BS_R(1.0) / det;
+        const bs_real p_n = (g_nt * v_t - g_tt * v_n) * inverse;
+        const bs_real p_t = (g_nt * v_n - g_nn * v_t) * inverse;
+        if (p_n >= BS_R(0.0) && p_t <= mu * p_n && p_t >= -mu * p_n) { /* stick */
+            p[0] = p_n;
+            p[1] = p_t;
             return 1;
         }
-        if (mu == BS_R(0.0)) { /* frictionless contact (a stop): normal only */
-            p[0] = -v_n / g_nn;
-            p[1] = BS_R(0.0);
-            return 1;
-        }
-        det = g_nn * g_tt - g_nt * g_nt;
-        if (det > BS_R(0.0)) {
-            const bs_real inverse = BS_R(1.0) / det;
-            const bs_real p_n = (g_nt * v_t - g_tt * v_n) * inverse;
-            const bs_real p_t = (g_nt * v_n - g_nn * v_t) * inverse;
-            if (p_n >= BS_R(0.0) && p_t <= mu * p_n && p_t >= -mu * p_n) { /* stick */
+    }
+    /* slip: try first the direction the tangential velocity takes without
+     * friction, xi_T = g_nt (-v_n / g_nn) + v_t (times g_nn > 0: no division) */
+    sign = (g_nn * v_t - g_nt * v_n) >= BS_R(0.0) ? BS_R(1.0) : BS_R(-1.0);
+    for (attempt = 0; attempt < 2; ++attempt, sign = -sign) {
+        const bs_real denominator = g_nn - sign * mu * g_nt;
+        if (denominator > BS_R(0.0)) {
+            const bs_real p_n = -v_n / denominator;
+            const bs_real xi_t = (g_nt - sign * mu * g_tt) * p_n + v_t;
+            if (sign * xi_t >= BS_R(0.0)) {
                 p[0] = p_n;
-                p[1] = p_t;
+                p[1] = -sign * mu * p_n;
                 return 1;
             }
         }
-        /* slip: try first the direction the tangential velocity takes without
-         * friction, xi_T = g_nt (-v_n / g_nn) + v_t (times g_nn > 0: no division) */
-        sign = (g_nn * v_t - g_nt * v_n) >= BS_R(0.0) ? BS_R(1.0) : BS_R(-1.0);
-        for (attempt = 0; attempt < 2; ++attempt, sign = -sign) {
-            const bs_real denominator = g_nn - sign * mu * g_nt;
-            if (denominator > BS_R(0.0)) {
-                const bs_real p_n = -v_n / denominator;
-                const bs_real xi_t = (g_nt - sign * mu * g_tt) * p_n + v_t;
-                if (sign * xi_t >= BS_R(0.0)) {
-                    p[0] = p_n;
-                    p[1] = -sign * mu * p_n;
-                    return 1;
-                }
-            }
-        }
-        prox(set, a, step[a], xi, p, p); /* fall-back, see the header comment */
-        return 0;
     }
+    prox(set, a, step[a], xi, p, p); /* fall-back, see the header comment */
+    return 0;
 #else
     (void)step;
-    v_n = xi[0] - g_nn * p[0];
+    (void)xi;
     p[0] = v_n >= BS_R(0.0) ? BS_R(0.0) : -v_n / g_nn;
     return 1;
 #endif
+}
+
+/* Exact solution of contact a's problem with the other contacts frozen
+ * (solve_local against v = xi - G_aa P_a). Returns 1, or 0 when it fell back
+ * to the prox update (no candidate held). */
+static int solve_contact(bs_contact_set *set, const bs_real *step, int a)
+{
+    const bs_real *p = &set->percussion[ROWS * a];
+    const bs_real *g_n = set->delassus[ROWS * a];
+    bs_real xi[ROWS], v[ROWS];
+
+    velocity(set, a, xi);
+    v[0] = xi[0] - g_n[ROWS * a] * p[0];
+#if BS_WITH_FRICTION
+    v[0] -= g_n[2 * a + 1] * p[1];
+    v[1] = xi[1] - set->delassus[2 * a + 1][2 * a] * p[0] - set->delassus[2 * a + 1][2 * a + 1] * p[1];
+#endif
+    return solve_local(set, step, a, xi, v);
 }
 
 /* Natural-map residual of the current P; xi receives xi = G P + c of every
@@ -255,10 +269,10 @@ static bs_real residual(const bs_contact_set *set, const bs_real *step)
 }
 
 /* r_i = 1 / max(diag G_ii), once per solve. */
-BS_INLINE void step_sizes(const bs_contact_set *set, bs_real *step)
+BS_INLINE void step_sizes(const bs_contact_set *set, int count, bs_real *step)
 {
     int a;
-    for (a = 0; a < set->count; ++a) {
+    for (a = 0; a < count; ++a) {
         bs_real largest = set->delassus[ROWS * a][ROWS * a];
 #if BS_WITH_FRICTION
         if (set->delassus[2 * a + 1][2 * a + 1] > largest)
@@ -270,11 +284,11 @@ BS_INLINE void step_sizes(const bs_contact_set *set, bs_real *step)
 
 /* sum_i r_i |c_i|_1: the percussion that would stop each contact's free
  * motion on its own. */
-BS_INLINE bs_real percussion_scale(const bs_contact_set *set, const bs_real *step)
+BS_INLINE bs_real percussion_scale(const bs_contact_set *set, int count, const bs_real *step)
 {
     bs_real scale = BS_R(0.0);
     int a, r;
-    for (a = 0; a < set->count; ++a)
+    for (a = 0; a < count; ++a)
         for (r = 0; r < ROWS; ++r)
             scale += step[a] * bs_fabs(set->free_velocity[ROWS * a + r]);
     return scale;
@@ -283,7 +297,7 @@ BS_INLINE bs_real percussion_scale(const bs_contact_set *set, const bs_real *ste
 bs_real bs_pgs_residual(const bs_contact_set *set)
 {
     bs_real step[BS_MAX_CONTACTS];
-    step_sizes(set, step);
+    step_sizes(set, set->count, step);
     return residual(set, step);
 }
 
@@ -891,32 +905,59 @@ static void solve_many(bs_contact_set *set, const bs_real *step, bs_goal goal, i
     }
 }
 
+/* Step sizes r_i and the goal of a solve of count contacts (inlined with
+ * the count a constant where it is 1 or 2: the loops unrolled). */
+BS_INLINE bs_goal goal_of(const bs_contact_set *set, int count, const bs_solver_options *options, bs_real *step)
+{
+    bs_goal goal;
+    bs_real scale;
+    step_sizes(set, count, step);
+    scale = percussion_scale(set, count, step);
+    goal.tolerance = options->tol_rel * scale + options->tol_abs;
+    goal.exact = BS_R(64.0) * BS_REAL_EPS * scale;
+    return goal;
+}
+
+/* One contact: exact by itself, v = c; the residual only when asked. */
+static void solve_one(bs_contact_set *set, const bs_solver_options *options, bs_step_report *report)
+{
+    bs_real step[1], xi[ROWS];
+    const bs_goal goal = goal_of(set, 1, options, step);
+    int exact, r;
+    for (r = 0; r < ROWS; ++r)
+        xi[r] = set->free_velocity[r] + set->delassus[r][0] * set->percussion[0]
+#if BS_WITH_FRICTION
+                + set->delassus[r][1] * set->percussion[1]
+#endif
+            ;
+    exact = solve_local(set, step, 0, xi, set->free_velocity);
+    report->sweeps = 1;
+    if (options->measure_residual) {
+        for (r = 0; r < ROWS; ++r)
+            xi[r] = set->free_velocity[r] + set->delassus[r][0] * set->percussion[0]
+#if BS_WITH_FRICTION
+                    + set->delassus[r][1] * set->percussion[1]
+#endif
+                ;
+        report->residual = residual_at(set, step, xi);
+        report->converged = report->residual <= goal.tolerance;
+    } else {
+        report->residual = BS_R(-1.0);
+        report->converged = exact;
+    }
+}
+
 void bs_pgs_solve(bs_contact_set *set, const bs_solver_options *options, bs_step_report *report)
 {
     bs_real step[BS_MAX_CONTACTS];
-    bs_real scale;
-    bs_goal goal;
-
-    step_sizes(set, step);
-    scale = percussion_scale(set, step);
-    goal.tolerance = options->tol_rel * scale + options->tol_abs;
-    goal.exact = BS_R(64.0) * BS_REAL_EPS * scale;
     report->systems = 0;
-    if (set->count == 1) { /* exact by itself: the residual only when asked */
-        const int exact = solve_contact(set, step, 0);
-        report->sweeps = 1;
-        if (options->measure_residual) {
-            bs_real xi[ROWS];
-            velocity(set, 0, xi);
-            report->residual = residual_at(set, step, xi);
-            report->converged = report->residual <= goal.tolerance;
-        } else {
-            report->residual = BS_R(-1.0);
-            report->converged = exact;
-        }
+    if (set->count == 1) {
+        solve_one(set, options, report);
     } else if (set->count == 2) {
+        const bs_goal goal = goal_of(set, 2, options, step);
         solve_pair(set, step, goal, options->measure_residual, report);
     } else {
+        const bs_goal goal = goal_of(set, set->count, options, step);
         solve_many(set, step, goal, options->max_sweeps, report);
     }
 }

@@ -167,20 +167,18 @@ static bs_status find_contacts(bs_sim *sim, step_state *s)
     frame.stops = sim->model == BS_MODEL_FREE;
     frame.cache = sim->side;
     frame.reach = sim->shape_reach;
+    frame.warm = (const bs_real(*)[BS_ROWS])sim->percussion;
     return bs_contact_detect(sim->scene, &sim->k, &frame, &sim->contacts);
 }
 
-/* 3b: the contact problem, warm-started from the last step's percussions;
- * adds M^-1 W P to the free velocities. */
+/* 3b: the contact problem, warm-started from the last step's percussions
+ * (which the detection put in the set); adds M^-1 W P to the free
+ * velocities. */
 static void solve_contacts(bs_sim *sim, step_state *s, bs_step_report *report)
 {
     bs_contact_set *set = &sim->contacts;
-    int a, r;
 
     bs_contact_problem(sim->scene, &sim->k, set, s->u_beam, s->u_slider, sim->u_beam, sim->slider_velocity);
-    for (a = 0; a < set->count; ++a)
-        for (r = 0; r < BS_ROWS; ++r)
-            set->percussion[BS_ROWS * a + r] = sim->percussion[set->id[a]][r];
     bs_pgs_solve(set, &sim->solver, report);
     bs_contact_apply(sim->scene, &sim->k, set, s->u_beam, s->u_slider);
 }
