@@ -126,8 +126,10 @@ static void test_beam_correction_converges_faster_than_open_loop(void **state)
         if (!closed)
             assert_true(r->error_rms > initial.error_rms / 3.0);
     }
-    assert_true(corrected.error_rms < open_loop.error_rms / 5.0);
-    assert_true(corrected.error_rms < 3.0 * SIGNAL_NOISE);
+    /* the corrected twin sits at the noise floor (1.0-1.4 sigma, both precisions
+     * and every build since 0.8.0; the open loop is 4-5 times above it) */
+    assert_true(corrected.error_rms < open_loop.error_rms / 3.0);
+    assert_true(corrected.error_rms < 2.0 * SIGNAL_NOISE);
 }
 
 /* A twin started 0.05 L from the plant (0.35 against 0.3) is brought back:

@@ -167,6 +167,8 @@ typedef struct bs_observer {
     bs_lowpass2 defl_a, defl_b;                       /* <w a>, <w b>: the twin's w(4L/7) */
     bs_real innovation_sq;                            /* running mean of e^2, each clipped at the gate */
     uint64_t last_outlier;                            /* step of the last outlier (0: none) */
+    int gain_interval;                                /* the gain schedule's interval of the last step */
+    bs_shape_cache shape;                             /* the mode shapes expanded about the slider */
     bs_lowpass2 power;                                /* <p> */
     bs_lowpass2 s_error_mean, s_error_sq;             /* of the raw s error */
     bs_observer_estimate estimate;

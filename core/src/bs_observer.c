@@ -260,6 +260,8 @@ bs_status bs_observer_init(bs_observer *obs, const bs_sim *sim, const bs_observe
     obs->power = obs->s_error_mean = obs->s_error_sq = zero;
     obs->innovation_sq = BS_R(0.0);
     obs->last_outlier = 0;
+    obs->gain_interval = 0;
+    bs_shape_forget(&obs->shape);
     obs->estimate.s = bs_sim_position(sim);
     obs->estimate.s_sigma = SIGMA_UNKNOWN;
     obs->estimate.s_error = BS_R(0.0);
@@ -275,18 +277,25 @@ bs_status bs_observer_init(bs_observer *obs, const bs_sim *sim, const bs_observe
     return BS_OK;
 }
 
-/* The gains at s: linear between the schedule's points, held beyond its ends. */
-static void gains_at(const bs_observer_gains *g, bs_real s, int n, bs_real *gain_q, bs_real *gain_u, bs_real *gain_v)
+/* The gains at s: linear between the schedule's points, held beyond its ends.
+ * *interval: the interval of the last call, where the search starts (s moves
+ * slowly: one comparison or two a step instead of a walk from the start); the
+ * interval found is the one the walk from 0 finds. */
+static void gains_at(const bs_observer_gains *g, bs_real s, int n, int *interval, bs_real *gain_q, bs_real *gain_u,
+                     bs_real *gain_v)
 {
     const int last = g->gain_count - 1;
     bs_real t;
-    int i = 0, k;
+    int i = *interval, k;
     if (s < g->gain_s[0])
         s = g->gain_s[0];
     if (s > g->gain_s[last])
         s = g->gain_s[last];
+    while (i > 0 && s <= g->gain_s[i])
+        --i;
     while (i < last - 1 && s > g->gain_s[i + 1])
         ++i;
+    *interval = i;
     t = (s - g->gain_s[i]) / (g->gain_s[i + 1] - g->gain_s[i]);
     for (k = 0; k < n; ++k) {
         gain_q[k] = g->gain_q[i][k] + t * (g->gain_q[i + 1][k] - g->gain_q[i][k]);
@@ -321,17 +330,27 @@ static void add_compensated(bs_real *x, bs_real *x_low, bs_real dx)
  * z_r += dw, beta -= dw' (beta is clockwise), x_C += d dw' (its centre of
  * mass, d below the slot centre, swings with the tilt); likewise the
  * velocities with du. Into c; the sim is not changed. */
-static void correction_of(const bs_sim *sim, const bs_observer_gains *g, bs_real e, corrected_state *c)
+static void correction_of(bs_observer *obs, const bs_sim *sim, bs_real e, corrected_state *c)
 {
     const bs_scene *scene = sim->scene;
     const int n = BS_NMODES(scene);
     bs_real gain_q[BS_MAX_MODES], gain_u[BS_MAX_MODES], gain_v, phi[BS_MAX_MODES], slope[BS_MAX_MODES];
     bs_real dw = BS_R(0.0), dw_slope = BS_R(0.0), dv = BS_R(0.0), dv_slope = BS_R(0.0);
     const bs_real x = sim->slider[0] + sim->x_c_low;
+    bs_real t = bs_shape_offset(scene, &obs->shape, x);
     int k;
 
-    gains_at(g, x / scene->length, n, gain_q, gain_u, &gain_v);
-    bs_shape_eval(scene, x, phi, slope);
+    gains_at(obs->gains, x / scene->length, n, &obs->gain_interval, gain_q, gain_u, &gain_v);
+    /* phi and phi' at the slider from an expansion about it, as the contact
+     * detection keeps them at the corners (core/src/bs_shape.c): the slider
+     * moves slowly, and a piece polynomial per mode every step (from the
+     * scene's table, in flash on a controller) cost more than the rest of
+     * the correction */
+    if (!(bs_fabs(t) <= sim->shape_reach)) {
+        bs_shape_expand(scene, x, &obs->shape);
+        t = bs_shape_offset(scene, &obs->shape, x);
+    }
+    bs_shape_expanded(scene, &obs->shape, t, x >= BS_R(0.0) && x <= scene->length, sim->k.slope_scale, phi, slope);
     for (k = 0; k < n; ++k) {
         const bs_real dq = gain_q[k] * e, du = gain_u[k] * e;
         c->q[k] = sim->q_beam[k] + dq;
@@ -364,11 +383,16 @@ static void correction_of(const bs_sim *sim, const bs_observer_gains *g, bs_real
 }
 
 /* c into the sim if it is a state bs_sim_set_state accepts (and the voltage
- * finite); returns 1, or 0 and leaves the sim as it was. */
+ * finite); returns 1, or 0 and leaves the sim as it was. Finiteness as one
+ * sum (a sum of finite values that overflows is refused too). */
 static int commit_correction(bs_sim *sim, const corrected_state *c)
 {
+    bs_real check = c->voltage + c->slider[0] + c->slider[1] + c->slider[2] + c->velocity[0] + c->velocity[1]
+                    + c->velocity[2];
     int k;
-    if (!bs_state_acceptable(sim, c->q, c->u, c->slider, c->velocity) || !finite(c->voltage))
+    for (k = 0; k < BS_NMODES(sim->scene); ++k)
+        check += c->q[k] + c->u[k];
+    if (!finite(check) || (sim->model == BS_MODEL_FREE && !bs_within_stops(sim->scene, c->slider[0])))
         return 0;
     for (k = 0; k < BS_NMODES(sim->scene); ++k) {
         sim->q_beam[k] = c->q[k];
@@ -641,8 +665,9 @@ static bs_status observe(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_r
     dt = sim->scene->dt;
     obs->steps += 1;
     obs->head = obs->head == BS_OBSERVER_MAX_LATENCY ? 0 : obs->head + 1;
-    obs->past_signal[obs->head] = twin_signal(sim, g->signal);
     obs->past_deflection[obs->head] = bs_sim_sensor(sim);
+    obs->past_signal[obs->head] = g->signal == BS_SIGNAL_DEFLECTION ? obs->past_deflection[obs->head]
+                                                                    : twin_signal(sim, g->signal);
     obs->past_accel[obs->head] = base_accel;
     aligned = obs->head - g->latency;
     if (aligned < 0)
@@ -653,7 +678,7 @@ static bs_status observe(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_r
         corrected_state corrected;
         int outlier = beyond_gate(obs, e);
         if (!outlier && obs->options.correct_beam) {
-            correction_of(sim, g, e, &corrected);
+            correction_of(obs, sim, e, &corrected);
             outlier = !commit_correction(sim, &corrected);
         }
         if (outlier) {
