@@ -18,21 +18,18 @@
  * and so come before errors of values, even at a later line. The first error
  * wins and names file, line, field, value and the allowed range.
  */
-#define _POSIX_C_SOURCE 200809L /* open, fstat, fcntl, fdopen */
 
 #include "scene_ini.h"
 
 #include <ctype.h>
 #include <errno.h>
-#include <fcntl.h>
 #include <ini.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
+#include "input_file.h"
 #include "schedule.h"
 
 typedef struct reader {
@@ -416,50 +413,12 @@ static int on_entry(void *user, const char *section, const char *key, const char
     return 1;
 }
 
-static const char *file_kind(mode_t mode)
-{
-    if (S_ISDIR(mode))
-        return "a folder";
-    if (S_ISFIFO(mode))
-        return "a FIFO (named pipe)";
-    if (S_ISCHR(mode))
-        return "a character device";
-    if (S_ISBLK(mode))
-        return "a block device";
-    if (S_ISSOCK(mode))
-        return "a socket";
-    return "not a regular file";
-}
-
 /* Opens a scene or base file for reading: a regular file of at most
- * SCENE_MAX_BYTES. Opened without blocking, so that a FIFO without a writer
- * is refused instead of waited for. 0, or -1 with what failed ("open",
- * "read") in verb and why in why. */
+ * SCENE_MAX_BYTES (the helper every reader uses, input_file.h). 0, or -1
+ * with what failed ("open", "read") in verb and why in why. */
 static int open_scene_file(const char *path, FILE **file, const char **verb, char *why, size_t size)
 {
-    struct stat info;
-    const int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY);
-
-    *file = NULL;
-    *verb = "open";
-    if (fd < 0) {
-        snprintf(why, size, "%s", strerror(errno));
-        return -1;
-    }
-    *verb = "read";
-    if (fstat(fd, &info) != 0)
-        snprintf(why, size, "%s", strerror(errno));
-    else if (!S_ISREG(info.st_mode))
-        snprintf(why, size, "%s, not a regular file", file_kind(info.st_mode));
-    else if (info.st_size > SCENE_MAX_BYTES)
-        snprintf(why, size, "%lld bytes, more than a scene file may have (%ld, 1 MiB)",
-                 (long long)info.st_size, SCENE_MAX_BYTES);
-    else if (fcntl(fd, F_SETFL, 0) != 0 || !(*file = fdopen(fd, "r")))
-        snprintf(why, size, "%s", strerror(errno));
-    else
-        return 0;
-    close(fd);
-    return -1;
+    return input_file_open_why(path, INPUT_SCENE, file, NULL, verb, why, size);
 }
 
 /* One pass of libinih over the file; 0 or -1 with err filled. */
