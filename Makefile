@@ -155,6 +155,7 @@ test-one: $(TEST_BIN) $(OBJ)/beamslider
 	@sh tests/check_core_symbols.sh $(REAL) $(CORE_OBJ)
 	@sh tests/check_core_includes.sh
 	@sh tests/check_cli.sh $(OBJ)/beamslider
+	@sh tests/check_inputs.sh $(OBJ)/beamslider
 	@sh tests/check_configs.sh $(OBJ)/beamslider
 	@sh tests/check_map.sh $(OBJ)/beamslider
 
