@@ -75,5 +75,18 @@ if [ "$precision" = float ]; then
         "$out" "$tmp/large.csv" -- run configs/fig6.ini --excitation "$tmp/large.csv" --out "$out"
 fi
 
+# ---- schedule points: checked when the scene is built, as frequency and acceleration are
+cp configs/mssp2023.ini "$tmp/mssp2023.ini"
+printf '[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\nacceleration = 14\nschedule = 0:124:14, 0.5:30000:14\n[run]\ns0 = 0.3\nt_end = 0.001\n' \
+    >"$tmp/nyquist.ini"
+refused "a schedule point above 1/(2 dt)" "$tmp/nyquist.ini:6: [excitation] schedule point 2: frequency 30000 Hz is out of range at dt = 2e-05 s; allowed: 5.421011e-15 <= f < 25000 Hz" \
+    "$out" "$tmp/nyquist.ini $tmp/mssp2023.ini" -- run "$tmp/nyquist.ini" --out "$out"
+refused "a denormal schedule frequency" "--set excitation.schedule=0:1e-320:14: [excitation] schedule point 1: frequency 9.99989e-321 Hz is out of range" \
+    "$out" "" -- run configs/fig6.ini --set excitation.schedule=0:1e-320:14 --t-end 0.001 --out "$out"
+refused "a schedule amplitude beyond the core's range" "[excitation] schedule point 1: amplitude 1e+308 m/s^2 is out of range; allowed: 0 .. " \
+    "$out" "" -- run configs/fig6.ini --set excitation.schedule=0:100:1e308 --t-end 0.001 --out "$out"
+refused "twin-plant on a schedule point above 1/(2 dt)" "$tmp/nyquist.ini:6: [excitation] schedule point 2" \
+    "$out" "" -- twin-plant "$tmp/nyquist.ini" --out "$out"
+
 echo "check_inputs: $passed passed, $failed failed ($bin)"
 [ "$failed" -eq 0 ]

@@ -15,6 +15,7 @@
  */
 #include "scene_build.h"
 #include "scene_limits.h"
+#include "schedule.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -285,6 +286,48 @@ static int check_derived(const scene_file *file, const scene_model *model, char 
     return 0;
 }
 
+/* The points of [excitation] schedule, each checked as the scene's own
+ * frequency and acceleration are (they reach the core the same way, through
+ * bs_sim_set_excitation, only later): a frequency within the core's range,
+ * with a phase step f dt 2^63 that does not round to 0 and at least two
+ * steps per period (f dt < 1/2); an amplitude within the range of
+ * [excitation] acceleration. Else the run would start, write its output and
+ * stop at the point with "argument out of range". */
+static int check_schedule(const scene_file *file, char *err, size_t size)
+{
+    const scene_params *p = &file->params;
+    schedule plan;
+    double f_low, f_high, a_low, a_high;
+    char where[SCENE_PATH + 16], low[40], high[40], why[160];
+    int k;
+
+    if (schedule_parse(p->schedule, &plan, why, sizeof why) != 0 || plan.points == 0)
+        return 0; /* its syntax was checked when it was read */
+    if (scene_limits_range(file, "excitation", "frequency", &f_low, &f_high) != 0)
+        f_low = HUGE_VAL; /* nothing works: every point is refused */
+    if (scene_limits_range(file, "excitation", "acceleration", &a_low, &a_high) != 0)
+        a_high = -1.0;
+    scene_where(file, "excitation", "schedule", where, sizeof where);
+    for (k = 0; k < plan.points; ++k) {
+        const double f = plan.frequency[k], a = plan.amplitude[k];
+        if (!(f >= f_low && f <= f_high && f * p->dt < 0.5)) {
+            bound_text(f_low, -1, low, sizeof low);
+            bound_text(fmin(f_high, 0.5 / p->dt), 0, high, sizeof high); /* exclusive: %.6g */
+            snprintf(err, size, "%s: [excitation] schedule point %d: frequency %g Hz is out of range at dt = %g s; "
+                     "allowed: %s <= f < %s Hz (at least two steps per period, and a phase step f dt 2^63 that "
+                     "does not round to 0)", where, k + 1, f, p->dt, low, high);
+            return -1;
+        }
+        if (!(a >= a_low && a <= a_high)) {
+            bound_text(a_high, 1, high, sizeof high);
+            snprintf(err, size, "%s: [excitation] schedule point %d: amplitude %g m/s^2 is out of range; allowed: "
+                     "0 .. %s m/s^2 (the range of [excitation] acceleration)", where, k + 1, a, high);
+            return -1;
+        }
+    }
+    return 0;
+}
+
 /* x_C = s0 L within the clamp stops, as the core computes it (in bs_real). */
 static int start_inside(const bs_scene *scene, bs_real s0)
 {
@@ -514,7 +557,8 @@ int scene_build(const scene_file *file, bs_scene *scene, scene_model *model, cha
                  file->files[0]);
         return -1;
     }
-    if (check_modal_results(file, &model->modes, err, size) != 0 || check_derived(file, model, err, size) != 0)
+    if (check_modal_results(file, &model->modes, err, size) != 0 || check_derived(file, model, err, size) != 0
+        || check_schedule(file, err, size) != 0)
         return -1;
     if (shape_fit_modes(&model->modes, scene_fit_tolerance(), &model->fit) != 0) {
         snprintf(err, size, "%s: %d modes need more than %d shape pieces for a fit error of %g "
