@@ -14,6 +14,8 @@ bin=${1:-}
 pack=${2:-}
 . "$(dirname "$0")/check_lib.sh"
 check_setup tests/check_inputs.sh "$bin"
+limit= # a FIFO must be refused at once: a regression would block, so bound every refusal
+if command -v timeout >/dev/null 2>&1; then limit="timeout 30"; fi
 precision=$("$bin" --version | sed -n 's/.*core precision \([a-z]*\).*/\1/p')
 
 # refused DESCRIPTION MESSAGE OUTPUT INPUTS -- ARGS...: beamslider ARGS must
@@ -27,7 +29,7 @@ refused() {
     n=0
     for f in $inputs; do n=$((n + 1)); cp "$f" "$tmp/before/$n" 2>/dev/null; done
     [ "$output" = - ] || rm -f "$output"
-    "$bin" "$@" >"$tmp/o" 2>"$tmp/e"
+    $limit "$bin" "$@" >"$tmp/o" 2>"$tmp/e"
     check_status "$description exits 2" 2 $? "$tmp/e"
     check_has "$description: message" "$tmp/e" "$message"
     n=0 changed=
@@ -87,6 +89,94 @@ refused "a schedule amplitude beyond the core's range" "[excitation] schedule po
     "$out" "" -- run configs/fig6.ini --set excitation.schedule=0:100:1e308 --t-end 0.001 --out "$out"
 refused "twin-plant on a schedule point above 1/(2 dt)" "$tmp/nyquist.ini:6: [excitation] schedule point 2" \
     "$out" "" -- twin-plant "$tmp/nyquist.ini" --out "$out"
+
+# ---- the measured-signals format: one grammar, one reader. The same malformed
+# streams to `beamslider twin` and to twin_pack: both refuse each with the same
+# line and the same reason (exit 2, no output, the stream unchanged)
+"$bin" twin-plant configs/fig6.ini --out "$tmp/good.csv" --t-end 0.004 --snr 40 >/dev/null 2>"$tmp/e"
+check_status "twin-plant of 0.004 s exits 0" 0 $? "$tmp/e"
+good=$tmp/good.csv
+mutate() { # NAME SED-SCRIPT: $tmp/m_NAME.csv from the good stream
+    sed "$2" "$good" >"$tmp/m_$1.csv"
+}
+mutate title '1s/.*/# beamslider signals/'
+mutate rate_twice '3a\
+# sample_rate = 50000 Hz'
+mutate khz 's/^# sample_rate = 50000 Hz$/# sample_rate = 50 kHz/'
+mutate unknown_key 's/^# sample_rate = /# sampel_rate = /'
+mutate spaced_key 's/^# sample_rate = /# sample rate = /'
+mutate noise_unitless 's/^\(# noise = [^ ]*\) m$/\1/'
+mutate noise_volts 's/^\(# noise = [^ ]*\) m$/\1 V/'
+mutate signal 's/^# signal = deflection$/# signal = velocity/'
+mutate no_signal '/^# signal = /d'
+mutate columns 's/^t,base_accel,signal,s_true$/t,accel,signal,s_true/'
+mutate nan '14s/,[^,]*,/,nan,/'
+mutate gap '16d'
+mutate five '17s/$/,1/'
+mutate empty '18s/.*//'
+mutate late_comment '19s/^/# /'
+mutate late '20s/^[^,]*,/0.00022,/'
+mutate no_rows '11,$d'
+awk 'NR == 15 { printf "%s,", $0; for (i = 0; i < 600; ++i) printf "0"; print ""; next } { print }' "$good" >"$tmp/m_long.csv"
+{ head -n 14 "$good"; printf '2.8e-04,1,\000,0.3\n'; tail -n +16 "$good"; } >"$tmp/m_nul.csv"
+for f in "$tmp"/m_*.csv; do
+    name=$(basename "$f" .csv)
+    cp "$f" "$tmp/before.csv"
+    rm -f "$tmp/est.csv" "$tmp/packed.stream"
+    "$bin" twin configs/fig6.ini --measured "$f" --out "$tmp/est.csv" >/dev/null 2>"$tmp/e_twin"
+    status_twin=$?
+    cp "$tmp/e_twin" "$tmp/e_twin_$name"
+    check_status "twin on $name exits 2" 2 $status_twin "$tmp/e_twin"
+    if grep -q -F "$f" "$tmp/e_twin"; then pass "twin on $name names the file"; else fail "twin on $name names the file" "$(cat "$tmp/e_twin")"; fi
+    if [ -e "$tmp/est.csv" ] || ! cmp -s "$f" "$tmp/before.csv"; then fail "twin on $name: no output, stream unchanged"
+    else pass "twin on $name: no output, stream unchanged"; fi
+    if [ -n "$pack" ]; then
+        "$pack" "$f" "$tmp/packed.stream" 2>"$tmp/e_pack"
+        check_status "twin_pack on $name exits 2" 2 $? "$tmp/e_pack"
+        sed 's/^beamslider: error: //' "$tmp/e_twin" >"$tmp/why_twin"
+        sed 's/^twin_pack: //' "$tmp/e_pack" >"$tmp/why_pack"
+        if cmp -s "$tmp/why_twin" "$tmp/why_pack"; then pass "twin and twin_pack refuse $name alike: $(head -c 160 "$tmp/why_twin")"
+        else fail "twin and twin_pack refuse $name alike" "twin: $(cat "$tmp/why_twin")
+twin_pack: $(cat "$tmp/why_pack")"; fi
+        if [ -e "$tmp/packed.stream" ]; then fail "twin_pack on $name writes no stream"; else pass "twin_pack on $name writes no stream"; fi
+    fi
+done
+for what in "khz:m_khz.csv:3: sample_rate must be a finite number followed by Hz, not '50 kHz'" \
+            "rate_twice:m_rate_twice.csv:4: sample_rate given twice (first at line 3)" \
+            "unknown_key:m_unknown_key.csv:3: unknown header field 'sampel_rate' (known: sample_rate, signal, signal_unit, base_accel_unit, latency, noise, accel_noise, plant)" \
+            "spaced_key:m_spaced_key.csv:3: a header line with '=' is a field" \
+            "noise_volts:m_noise_volts.csv:8: noise is given in V, but signal = deflection is in m" \
+            "gap:m_gap.csv:16: t = 0.00014 s, expected 0.00012 s (row 6 at sample_rate = 50000 Hz): a gap" \
+            "nul:m_nul.csv:15: a NUL byte: not a text file"; do
+    name=m_${what%%:*}
+    check_has "the reason for $name" "$tmp/e_twin_$name" "${what#*:}"
+done
+
+# ---- twin --measured -: a live stream on standard input, read once
+"$bin" twin configs/fig6.ini --measured - --out "$tmp/est_stdin.csv" <"$good" >"$tmp/stdin.json" 2>"$tmp/e"
+check_status "twin --measured - exits 0 at the end of its input" 0 $? "$tmp/e"
+check_has "... and its summary counts the rows read" "$tmp/stdin.json" '"rows":200,'
+"$bin" twin configs/fig6.ini --measured "$good" --out "$tmp/est_file.csv" >/dev/null 2>"$tmp/e"
+if cmp -s "$tmp/est_file.csv" "$tmp/est_stdin.csv"; then pass "standard input and the file give the same estimates"
+else fail "standard input and the file give the same estimates"; fi
+sed '/^# noise = /d' "$good" >"$tmp/quiet.csv"
+"$bin" twin configs/fig6.ini --measured - --out "$tmp/est_quiet.csv" <"$tmp/quiet.csv" >/dev/null 2>"$tmp/e"
+check_status "twin --measured - without a noise exits 2" 2 $? "$tmp/e"
+check_has "... saying to give --noise" "$tmp/e" "give --noise SIGMA or a '# noise = ...' header line"
+sed '20s/,[^,]*,/,x,/' "$good" | "$bin" twin configs/fig6.ini --measured - --out "$tmp/est_bad.csv" >/dev/null 2>"$tmp/e"
+check_status "a bad row on standard input exits 2" 2 $? "$tmp/e"
+check_has "... naming its line" "$tmp/e" "standard input:20: base_accel 'x' is not a finite number"
+awk 'NR == 20 { for (i = 0; i < 600; ++i) printf "1"; print ""; next } { print }' "$good" \
+    | "$bin" twin configs/fig6.ini --measured - --out "$tmp/est_long.csv" >/dev/null 2>"$tmp/e"
+check_status "a line over 511 characters on standard input exits 2" 2 $? "$tmp/e"
+check_has "... naming its line" "$tmp/e" "standard input:20: longer than 511 characters"
+cat "$good" | "$bin" twin configs/fig6.ini --measured /dev/stdin --out "$tmp/est_dev.csv" >/dev/null 2>"$tmp/e"
+check_status "--measured /dev/stdin on a pipe exits 2" 2 $? "$tmp/e"
+check_has "... saying to use -" "$tmp/e" "/dev/stdin: cannot read measured-signals file: a FIFO (named pipe), not a regular file (a live stream: give --measured - and send it to standard input)"
+if mkfifo "$tmp/fifo" 2>/dev/null; then
+    refused "--measured FIFO" "$tmp/fifo: cannot read measured-signals file: a FIFO (named pipe), not a regular file (a live stream: give --measured -" \
+        "$out" "" -- twin configs/fig6.ini --measured "$tmp/fifo" --out "$out"
+fi
 
 echo "check_inputs: $passed passed, $failed failed ($bin)"
 [ "$failed" -eq 0 ]
