@@ -178,5 +178,47 @@ if mkfifo "$tmp/fifo" 2>/dev/null; then
         "$out" "" -- twin configs/fig6.ini --measured "$tmp/fifo" --out "$out"
 fi
 
+# ---- no command writes over one of its inputs: compared as files (device and
+# inode), through symbolic and hard links, before anything is truncated
+awk 'BEGIN { print "# beamslider base acceleration"; print "# sample_rate = 50000 Hz"; print "# unit = m/s^2"
+             for (k = 0; k <= 100; ++k) printf "%.6g\n", -14 * cos(2 * 3.14159265 * 124 * k / 50000) }' >"$tmp/rec.csv"
+ln -s rec.csv "$tmp/rec_link.csv"
+ln "$tmp/rec.csv" "$tmp/rec_hard.csv"
+refused "run --out the --excitation record" "--out $tmp/rec.csv is the --excitation file $tmp/rec.csv: it would be overwritten" \
+    - "$tmp/rec.csv" -- run configs/fig6.ini --excitation "$tmp/rec.csv" --out "$tmp/rec.csv"
+refused "run --out a symbolic link to the record" "--out $tmp/rec_link.csv is the --excitation file $tmp/rec.csv" \
+    - "$tmp/rec.csv" -- run configs/fig6.ini --excitation "$tmp/rec.csv" --out "$tmp/rec_link.csv"
+refused "run --periods a hard link to the record" "--periods $tmp/rec_hard.csv is the --excitation file $tmp/rec_link.csv" \
+    - "$tmp/rec.csv" -- run configs/fig6.ini --excitation "$tmp/rec_link.csv" --periods "$tmp/rec_hard.csv"
+cp "$good" "$tmp/measured.csv"
+ln -s measured.csv "$tmp/measured_link.csv"
+refused "twin --out the --measured file" "--out $tmp/measured_link.csv is the --measured file $tmp/measured.csv: it would be overwritten" \
+    - "$tmp/measured.csv" -- twin configs/fig6.ini --measured "$tmp/measured.csv" --out "$tmp/measured_link.csv"
+ln -s mssp2023.ini "$tmp/base_link.ini"
+printf '[scene]\nbase = mssp2023.ini\n[excitation]\nfrequency = 124\nacceleration = 14\n[run]\ns0 = 0.3\nt_end = 0.001\n' \
+    >"$tmp/plant.ini"
+refused "twin-plant --out a link to the scene's base" "--out $tmp/base_link.ini is the scene's base file $tmp/mssp2023.ini" \
+    - "$tmp/plant.ini $tmp/mssp2023.ini" -- twin-plant "$tmp/plant.ini" --out "$tmp/base_link.ini"
+mkdir "$tmp/mapdir"
+cp configs/fig6.ini "$tmp/mapdir/map.csv"
+cp configs/mssp2023.ini "$tmp/mapdir/"
+refused "map --out the folder holding its scene as map.csv" "--out $tmp/mapdir: $tmp/mapdir/map.csv is the scene file $tmp/mapdir/map.csv: it would be replaced" \
+    - "$tmp/mapdir/map.csv" -- map "$tmp/mapdir/map.csv" --vary excitation.frequency=120,124 --set run.t_end=0.002 --out "$tmp/mapdir"
+
+# ---- map --out DIR: missing parents are made (mkdir -p); one that cannot be is named
+"$bin" map configs/fig6.ini --vary excitation.frequency=120,124 --set run.t_end=0.002 --jobs 1 \
+    --out "$tmp/new/deep/map" >/dev/null 2>"$tmp/e"
+check_status "map --out a folder whose parents are missing exits 0" 0 $? "$tmp/e"
+if [ -f "$tmp/new/deep/map/map.csv" ]; then pass "... and makes them"; else fail "... and makes them"; fi
+: >"$tmp/plain"
+refused "map --out under a regular file" "--out $tmp/plain/map: cannot create the folder: $tmp/plain is a file, not a folder" \
+    - "" -- map configs/fig6.ini --vary excitation.frequency=120,124 --set run.t_end=0.002 --out "$tmp/plain/map"
+if [ "$(id -u)" != 0 ]; then
+    mkdir "$tmp/locked" && chmod 555 "$tmp/locked"
+    refused "map --out under a folder without write permission" "--out $tmp/locked/a/b: cannot create the folder $tmp/locked/a: Permission denied" \
+        - "" -- map configs/fig6.ini --vary excitation.frequency=120,124 --set run.t_end=0.002 --out "$tmp/locked/a/b"
+    chmod 755 "$tmp/locked"
+fi
+
 echo "check_inputs: $passed passed, $failed failed ($bin)"
 [ "$failed" -eq 0 ]

@@ -151,6 +151,25 @@ static char *command_text(int argc, char **argv)
     return text;
 }
 
+/* The tables the map writes into dir must not be the scene or a base (a
+ * scene named map.csv in its own --out folder would be replaced): 0, or -1
+ * after reporting. */
+static int writes_over_scene(const char *dir, const scene_file *scene)
+{
+    static const char *const tables[] = { MAP_RUNS_TABLE, MAP_POINTS_TABLE, MAP_IDENTITY_FILE };
+    char path[4200];
+    const char *input;
+    size_t i;
+    for (i = 0; i < sizeof tables / sizeof tables[0]; ++i) {
+        snprintf(path, sizeof path, "%s/%s", dir, tables[i]);
+        if (cli_is_scene_file(path, scene, &input)) {
+            cli_error("--out %s: %s is the scene file %s: it would be replaced", dir, path, input);
+            return -1;
+        }
+    }
+    return 0;
+}
+
 /* Reads dir's rows; writes the tables when every case is done. Sets done,
  * torn, invalid, complete of summary. 0, or -1 after reporting. */
 static int merge(const char *dir, const map_grid *grid, summary_map *m, int report_missing)
@@ -225,6 +244,11 @@ int cli_map(int argc, char **argv)
         cli_error("out of memory");
         map_grid_free(&grid);
         return CLI_FAILED;
+    }
+    if (writes_over_scene(cli.dir, &base) != 0) {
+        free(identity);
+        map_grid_free(&grid);
+        return CLI_USAGE;
     }
     switch (map_dir_claim(cli.dir, identity, err, sizeof err)) {
     case 0:

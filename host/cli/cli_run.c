@@ -219,6 +219,7 @@ int cli_run(int argc, char **argv)
     int measured;
     char err[1024];
     cli_output outputs[2];
+    cli_input record_input;
     FILE *csv, *periods;
     int failed, status;
 
@@ -238,7 +239,9 @@ int cli_run(int argc, char **argv)
     outputs[0].path = cli.out_path;
     outputs[1].option = "--periods";
     outputs[1].path = cli.periods_path;
-    if ((status = cli_open_outputs(outputs, 2, &file)) != CLI_OK) {
+    record_input.option = "--excitation";
+    record_input.path = cli.excitation_path;
+    if ((status = cli_open_outputs_reading(outputs, 2, &file, &record_input, 1)) != CLI_OK) {
         if (measured)
             excitation_stream_close(&record.stream);
         return status;

@@ -15,7 +15,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include "bs_observer.h"
 #include "bs_platform.h"
 #include "cli.h"
@@ -471,12 +470,6 @@ static int open_measured(measured_file *m, const char *path, double dt)
     return 0;
 }
 
-static int same_file(const char *a, const char *b)
-{
-    struct stat sa, sb;
-    return a && b && stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
-}
-
 /* ---- twin-gains and twin ---- */
 
 static int design(const twin_cli *c, const scene_file *file, const scene_model *model, const bs_scene *scene,
@@ -643,6 +636,7 @@ static int cli_twin_run(int argc, char **argv)
     measured_file m;
     twin_tally tally;
     cli_output output;
+    cli_input measured_input;
     const measured_header *header;
     double noise, start;
     int status, failed, bad_input = 0;
@@ -651,10 +645,6 @@ static int cli_twin_run(int argc, char **argv)
         return CLI_USAGE;
     if (!c.measured_path || !c.out_path) {
         cli_error("twin needs --measured FILE.csv and --out EST.csv");
-        return CLI_USAGE;
-    }
-    if (same_file(c.measured_path, c.out_path)) {
-        cli_error("--out %s is the --measured file", c.out_path);
         return CLI_USAGE;
     }
     if (open_measured(&m, c.measured_path, file.params.dt) != 0)
@@ -685,7 +675,9 @@ static int cli_twin_run(int argc, char **argv)
     }
     output.option = "--out";
     output.path = c.out_path;
-    if ((status = cli_open_outputs(&output, 1, &file)) != CLI_OK) {
+    measured_input.option = "--measured";
+    measured_input.path = c.measured_path;
+    if ((status = cli_open_outputs_reading(&output, 1, &file, &measured_input, 1)) != CLI_OK) {
         measured_close(&m.reader);
         return status;
     }

@@ -284,23 +284,78 @@ static int publish_identity(const char *dir, const char *identity, char *err, si
     return status;
 }
 
+/* Creates dir and the folders above it that are missing (mkdir -p; another
+ * shard may make one at the same time: EEXIST is fine). Returns 1 + the
+ * length of the first folder it created (for remove_folders), 0 if another
+ * made them all, or -1 with err naming the folder that could not be made
+ * and why. */
+static int make_folders(const char *dir, char *err, size_t size)
+{
+    char prefix[4200];
+    const size_t length = strlen(dir);
+    size_t end;
+    int first = 0;
+
+    for (end = 1; end <= length; ++end) {
+        struct stat info;
+        if (end < length && dir[end] != '/')
+            continue;
+        if (dir[end - 1] == '/')
+            continue; /* "//" */
+        memcpy(prefix, dir, end);
+        prefix[end] = '\0';
+        if (stat(prefix, &info) == 0) {
+            if (!S_ISDIR(info.st_mode)) {
+                snprintf(err, size, "--out %s: cannot create the folder: %s is a file, not a folder", dir, prefix);
+                return -1;
+            }
+            continue;
+        }
+        if (errno != ENOENT || (mkdir(prefix, 0777) != 0 && errno != EEXIST)) {
+            snprintf(err, size, "--out %s: cannot create the folder %s: %s", dir, prefix, strerror(errno));
+            return -1;
+        }
+        if (!first)
+            first = (int)end + 1;
+    }
+    return first;
+}
+
+/* Removes the folders make_folders created (1 + the length of the first), deepest first. */
+static void remove_folders(const char *dir, int created)
+{
+    char prefix[4200];
+    size_t end = strlen(dir);
+    snprintf(prefix, sizeof prefix, "%s", dir);
+    while (end + 1 >= (size_t)created && end > 0) {
+        prefix[end] = '\0';
+        if (rmdir(prefix) != 0)
+            return;
+        while (end > 0 && prefix[end - 1] != '/')
+            --end;
+        while (end > 0 && prefix[end - 1] == '/')
+            --end;
+    }
+}
+
 int map_dir_claim(const char *dir, const char *identity, char *err, size_t size)
 {
     char path[4200];
     struct stat info;
     char *there;
-    int created = 0, status;
+    int created = 0, first_made = 0, status;
 
     if (strlen(dir) > 4000) {
         snprintf(err, size, "--out %.40s...: path too long", dir);
         return -1;
     }
     if (stat(dir, &info) != 0) {
-        /* EEXIST: another shard made it just now */
-        if (errno != ENOENT || (mkdir(dir, 0777) != 0 && errno != EEXIST)) {
-            snprintf(err, size, "--out %s: cannot create the folder: %s", dir, strerror(errno));
+        if (errno != ENOENT && errno != ENOTDIR) { /* ENOTDIR: make_folders names the file in the way */
+            snprintf(err, size, "--out %s: %s", dir, strerror(errno));
             return -1;
         }
+        if ((first_made = make_folders(dir, err, size)) < 0)
+            return -1;
         created = 1;
     } else if (!S_ISDIR(info.st_mode)) {
         snprintf(err, size, "--out %s: not a folder", dir);
@@ -315,8 +370,8 @@ int map_dir_claim(const char *dir, const char *identity, char *err, size_t size)
         }
         status = publish_identity(dir, identity, err, size);
         if (status <= 0) {
-            if (status < 0 && created)
-                rmdir(dir);
+            if (status < 0 && first_made > 0)
+                remove_folders(dir, first_made);
             return status;
         }
     }
