@@ -220,5 +220,27 @@ if [ "$(id -u)" != 0 ]; then
     chmod 755 "$tmp/locked"
 fi
 
+# ---- map folder files are opened as every input is: a FIFO or a link to
+# /dev/zero among them is refused at once (they used to hang map-merge)
+dir=$tmp/new/deep/map
+if mkfifo "$dir/runs-fifo.csv" 2>/dev/null; then
+    $limit "$bin" map-merge "$dir" >/dev/null 2>"$tmp/e"
+    check_has "map-merge refuses a FIFO among the result files" "$tmp/e" "$dir/runs-fifo.csv: cannot read map result file: a FIFO (named pipe), not a regular file"
+    rm -f "$dir/runs-fifo.csv"
+fi
+ln -s /dev/zero "$dir/runs-zero.csv"
+$limit "$bin" map-merge "$dir" >/dev/null 2>"$tmp/e"
+check_has "map-merge refuses a link to /dev/zero among the result files" "$tmp/e" "$dir/runs-zero.csv: cannot read map result file: a character device, not a regular file"
+rm -f "$dir/runs-zero.csv"
+mv "$dir/map-identity.txt" "$tmp/identity.txt"
+ln -s /dev/zero "$dir/map-identity.txt"
+$limit "$bin" map-merge "$dir" >/dev/null 2>"$tmp/e"
+check_status "map-merge of a folder whose identity is /dev/zero exits 2" 2 $? "$tmp/e"
+check_has "... naming it" "$tmp/e" "$dir/map-identity.txt: cannot read map identity: a character device, not a regular file"
+rm -f "$dir/map-identity.txt"
+mv "$tmp/identity.txt" "$dir/map-identity.txt"
+"$bin" map-merge "$dir" >/dev/null 2>"$tmp/e"
+check_status "map-merge of the folder as it was exits 0" 0 $? "$tmp/e"
+
 echo "check_inputs: $passed passed, $failed failed ($bin)"
 [ "$failed" -eq 0 ]

@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "bs_revision.h"
+#include "input_file.h"
 #include "map_case.h"
 #include "scene_values.h"
 
@@ -196,23 +197,25 @@ static int compare_identities(const char *dir, const char *a, const char *b, cha
     }
 }
 
-/* The whole of a file, malloc'd and NUL-terminated; NULL with errno. */
-static char *read_all(const char *path)
+/* The whole of an identity file (opened as every input is, input_file.h),
+ * malloc'd and NUL-terminated; NULL with why (the path named) set. */
+static char *read_all(const char *path, char *why, size_t why_size)
 {
-    FILE *in = fopen(path, "r");
+    FILE *in;
     char *data = NULL;
     size_t used = 0, size = 0;
 
-    if (!in)
+    if (input_file_open(path, INPUT_MAP_IDENTITY, &in, NULL, why, why_size) != 0)
         return NULL;
     for (;;) {
         size_t n;
         if (used + 4096 + 1 > size) {
             char *grown = realloc(data, size ? 2 * size : 8192);
-            if (!grown) {
-                free(data);
+            if (!grown || (long long)used > input_kind_max_bytes(INPUT_MAP_IDENTITY)) { /* a file that grows */
+                free(grown ? grown : data);
                 fclose(in);
-                errno = ENOMEM;
+                snprintf(why, why_size, "%s: cannot read map identity: %s", path,
+                         grown ? "it grew past its bound while being read" : strerror(ENOMEM));
                 return NULL;
             }
             data = grown;
@@ -226,7 +229,7 @@ static char *read_all(const char *path)
     if (ferror(in)) {
         free(data);
         fclose(in);
-        errno = EIO;
+        snprintf(why, why_size, "%s: cannot read map identity: %s", path, strerror(EIO));
         return NULL;
     }
     fclose(in);
@@ -375,11 +378,9 @@ int map_dir_claim(const char *dir, const char *identity, char *err, size_t size)
             return status;
         }
     }
-    there = read_all(path);
-    if (!there) {
-        snprintf(err, size, "cannot read %s: %s", path, strerror(errno));
+    there = read_all(path, err, size);
+    if (!there)
         return -1;
-    }
     status = compare_identities(dir, there, identity, err, size);
     if (status == 0) {
         size_t la = 0, lb = 0;
@@ -397,7 +398,7 @@ int map_dir_claim(const char *dir, const char *identity, char *err, size_t size)
 
 int map_identity_read(const char *dir, map_grid *grid, char *scene, char *err, size_t size)
 {
-    char path[4200];
+    char path[4200], why[4400];
     char *identity;
     const char *value;
     size_t length;
@@ -405,9 +406,9 @@ int map_identity_read(const char *dir, map_grid *grid, char *scene, char *err, s
 
     map_grid_init(grid);
     snprintf(path, sizeof path, "%s/" MAP_IDENTITY_FILE, dir);
-    identity = read_all(path);
+    identity = read_all(path, why, sizeof why);
     if (!identity) {
-        snprintf(err, size, "%s: no map here: cannot read %s: %s", dir, path, strerror(errno));
+        snprintf(err, size, "%s: no map here: %s", dir, why);
         return -1;
     }
     value = identity_value(identity, "info scene", 0, &length);
@@ -458,16 +459,17 @@ static int is_results_name(const struct dirent *entry)
     return n > 9 && !strncmp(entry->d_name, "runs-", 5) && !strcmp(entry->d_name + n - 4, ".csv");
 }
 
-/* Takes one file's lines into found. */
-static void read_results_file(const char *path, const map_grid *grid, map_found *found)
+/* Takes one file's lines into found (opened as every input is,
+ * input_file.h): 0, or -1 with err. */
+static int read_results_file(const char *path, const map_grid *grid, map_found *found, char *err, size_t size)
 {
-    FILE *in = fopen(path, "r");
+    FILE *in;
     char *line = NULL;
     size_t capacity = 0;
     ssize_t length;
 
-    if (!in)
-        return;
+    if (input_file_open(path, INPUT_MAP_RESULTS, &in, NULL, err, size) != 0)
+        return -1;
     while ((length = getline(&line, &capacity, in)) > 0) {
         long c;
         if (!strncmp(line, "case,", 5))
@@ -504,13 +506,14 @@ static void read_results_file(const char *path, const map_grid *grid, map_found 
     }
     free(line);
     fclose(in);
+    return 0;
 }
 
 int map_found_read(const char *dir, const map_grid *grid, map_found *found, char *err, size_t size)
 {
     struct dirent **names;
     char path[4400];
-    int count, i;
+    int count, i, failed = 0;
 
     memset(found, 0, sizeof *found);
     found->row = calloc((size_t)grid->cases, sizeof *found->row);
@@ -527,11 +530,14 @@ int map_found_read(const char *dir, const map_grid *grid, map_found *found, char
     }
     for (i = 0; i < count; ++i) {
         snprintf(path, sizeof path, "%s/%s", dir, names[i]->d_name);
-        read_results_file(path, grid, found);
+        if (!failed && read_results_file(path, grid, found, err, size) != 0)
+            failed = 1;
         free(names[i]);
     }
     free(names);
-    return 0;
+    if (failed)
+        map_found_free(found, grid->cases);
+    return failed ? -1 : 0;
 }
 
 void map_found_free(map_found *found, long cases)
