@@ -242,5 +242,20 @@ mv "$tmp/identity.txt" "$dir/map-identity.txt"
 "$bin" map-merge "$dir" >/dev/null 2>"$tmp/e"
 check_status "map-merge of the folder as it was exits 0" 0 $? "$tmp/e"
 
+# ---- --set values with control characters are refused as in a file (they
+# reached the map identity and the stream headers, one-line texts)
+nl='
+'
+refused "run --set a name with a newline" "--set scene.name=a...: control character 0x0a after 12 characters" \
+    "$out" "" -- run configs/fig6.ini --set "scene.name=a${nl}b" --t-end 0.001 --out "$out"
+refused "map --set a name with a newline" "--set scene.name=a...: control character 0x0a" \
+    "$tmp/ctl_map" "" -- map configs/fig6.ini --set "scene.name=a${nl}b" --vary excitation.frequency=120,124 --out "$tmp/ctl_map"
+esc=$(printf '\033')
+refused "twin-plant --set a description with an escape" "--set scene.description=x...: control character 0x1b" \
+    "$out" "" -- twin-plant configs/fig6.ini --set "scene.description=x${esc}[31m" --out "$out"
+cp configs/fig6.ini "$tmp/a${nl}b.ini"
+refused "a scene file name with a newline and no [scene] name" "the file name cannot be the scene's name (longer than 127 characters, not UTF-8 or holding a control character): set [scene] name" \
+    "$out" "" -- run "$tmp/a${nl}b.ini" --out "$out"
+
 echo "check_inputs: $passed passed, $failed failed ($bin)"
 [ "$failed" -eq 0 ]

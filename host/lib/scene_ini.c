@@ -517,8 +517,21 @@ static int load_file(scene_file *scene, const char *path, char *err, size_t err_
     return run_parser(&p);
 }
 
+/* 1 if text holds a control character (a tab aside): refused in a value,
+ * as the reader refuses it in a file's line, since values reach one-line
+ * texts (a map's identity, a stream's header). */
+static int has_control(const char *text, size_t *at)
+{
+    const unsigned char *c = (const unsigned char *)text;
+    for (*at = 0; c[*at]; ++*at)
+        if ((c[*at] < 0x20 && c[*at] != '\t') || c[*at] == 0x7f)
+            return 1;
+    return 0;
+}
+
 /* The file name without its folder and .ini, unless it cannot serve as the
- * name (too long, not UTF-8): then 0, and a [scene] name must be given. */
+ * name (too long, not UTF-8, a control character): then 0, and a [scene]
+ * name must be given. */
 static int default_name(scene_file *scene, const char *path)
 {
     const char *slash = strrchr(path, '/');
@@ -530,7 +543,7 @@ static int default_name(scene_file *scene, const char *path)
         return 0;
     memcpy(scene->params.name, base, length);
     scene->params.name[length] = '\0';
-    return is_utf8(scene->params.name);
+    return is_utf8(scene->params.name) && !has_control(scene->params.name, &length);
 }
 
 int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
@@ -564,16 +577,31 @@ int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
         return -1;
     }
     if (!name_from_path && scene->set_file[field_index("scene", "name")] == SCENE_NOT_SET) {
-        snprintf(err, err_size, "%s: the file name cannot be the scene's name (longer than %d characters "
-                 "or not UTF-8): set [scene] name", path, SCENE_TEXT - 1);
+        snprintf(err, err_size, "%s: the file name cannot be the scene's name (longer than %d characters, "
+                 "not UTF-8 or holding a control character): set [scene] name", path, SCENE_TEXT - 1);
         return -1;
     }
     return 0;
 }
 
+/* An option's text with a control character is refused as a file's line
+ * would be; 0 or -1 with "OPTION TEXT...: control character 0x0a ...". */
+static int check_option_text(const char *option, const char *text, char *err, size_t err_size)
+{
+    size_t at;
+    if (!has_control(text, &at))
+        return 0;
+    snprintf(err, err_size, "%s %.*s...: control character 0x%02x after %lu characters: not allowed in a value "
+             "(as in a scene file, where it is not text)", option, (int)at, text, (unsigned)(unsigned char)text[at],
+             (unsigned long)at);
+    return -1;
+}
+
 int scene_set(scene_file *scene, const char *section, const char *key, const char *value,
               const char *origin, char *err, size_t err_size)
 {
+    if (check_option_text(origin, value, err, err_size) != 0)
+        return -1;
     if (strlen(origin) >= SCENE_OPTION) {
         snprintf(err, err_size, "%.*s...: option name too long (at most %d characters)", SCENE_OPTION,
                  origin, SCENE_OPTION - 1);
@@ -612,6 +640,8 @@ int scene_set_assignment(scene_file *scene, const char *option, const char *assi
     const char *equals = strchr(assignment, '=');
     const char *dot = strchr(assignment, '.');
 
+    if (check_option_text(option, assignment, err, err_size) != 0)
+        return -1;
     if (!equals || !dot || dot > equals || dot == assignment || dot + 1 == equals) {
         snprintf(err, err_size, "%s %s: expected section.key=value, such as %s excitation.frequency=110 "
                  "(beamslider fields lists every field)", option, assignment, option);
