@@ -257,5 +257,14 @@ cp configs/fig6.ini "$tmp/a${nl}b.ini"
 refused "a scene file name with a newline and no [scene] name" "the file name cannot be the scene's name (longer than 127 characters, not UTF-8 or holding a control character): set [scene] name" \
     "$out" "" -- run "$tmp/a${nl}b.ini" --out "$out"
 
+# ---- a refusal names the field that was given (tests/fuzz/check_extreme_values.sh
+# sweeps every field at tiny and huge values)
+refused "--set transducer.capacitance=4.9e-324" "--set transducer.capacitance=4.9e-324: the values make 1 / C_p, the patch's inverse capacitance about 1e+323" \
+    "$out" "" -- run configs/fig6.ini --set transducer.load=resistor --set transducer.capacitance=4.9e-324 --out "$out"
+refused "--set transducer.capacitance=1e-30" "--set transducer.capacitance=1e-30: [transducer] capacitance = 1e-30 F: the open patch's stiffness" \
+    "$out" "" -- run configs/fig6.ini --set transducer.load=resistor --set transducer.capacitance=1e-30 --out "$out"
+refused "--set excitation.frequency=1e30" "--set excitation.frequency=1e30: [excitation] frequency = 1e+30 Hz: fewer than two steps per excitation period, with [numerics] dt = 2e-05 s" \
+    "$out" "" -- run configs/fig6.ini --set excitation.frequency=1e30 --out "$out"
+
 echo "check_inputs: $passed passed, $failed failed ($bin)"
 [ "$failed" -eq 0 ]

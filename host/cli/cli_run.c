@@ -200,7 +200,7 @@ static int close_output(const char *path, FILE *file, const run_result *result)
     if (cli_close_output(path, file, result->write_errno) != 0)
         return -1;
     if (result->write_failed) {
-        cli_error("%s holds the run only up to t = %.6f s: it stopped at a write error", path, result->t);
+        cli_error("%s holds the run only up to t = %.9g s: it stopped at a write error", path, result->t);
         return -1;
     }
     return 0;
@@ -271,7 +271,7 @@ int cli_run(int argc, char **argv)
     if (result.input_failed)
         cli_error("%s; state and CSV kept up to t = %.6g s", record.err, result.t);
     else if (result.status != BS_OK)
-        cli_error("%s: stopped at t = %.6f s (step %llu): %s; state and CSV kept up to the last good step",
+        cli_error("%s: stopped at t = %.9g s (step %llu): %s; state and CSV kept up to the last good step",
                   file.params.name, result.t, (unsigned long long)result.steps, bs_status_text(result.status));
     if (summary_print_run(stdout, &file, &scene, measured ? &record.file : NULL, &result) != 0) {
         cli_error("cannot write the summary (out of memory?)");
