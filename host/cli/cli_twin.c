@@ -267,9 +267,12 @@ static int load_scene(const twin_cli *c, scene_file *file, bs_scene *scene, scen
     return 0;
 }
 
+/* --latency in steps; beyond BS_OBSERVER_MAX_LATENCY (refused by the
+ * callers) the quotient is not converted: it may exceed a long. */
 static long latency_steps(const twin_cli *c, double dt)
 {
-    return lround(c->latency / dt);
+    const double steps = c->latency / dt;
+    return steps < BS_OBSERVER_MAX_LATENCY + 1.0 ? lround(steps) : BS_OBSERVER_MAX_LATENCY + 1;
 }
 
 /* ---- twin-plant ---- */
