@@ -530,8 +530,9 @@ static int has_control(const char *text, size_t *at)
 }
 
 /* The file name without its folder and .ini, unless it cannot serve as the
- * name (too long, not UTF-8, a control character): then 0, and a [scene]
- * name must be given. */
+ * name (too long, not UTF-8): then 0, and a [scene] name must be given. A
+ * file name may hold control characters: whatever writes the name escapes
+ * it (the JSON summary; tests/test_summary.c). */
 static int default_name(scene_file *scene, const char *path)
 {
     const char *slash = strrchr(path, '/');
@@ -543,7 +544,7 @@ static int default_name(scene_file *scene, const char *path)
         return 0;
     memcpy(scene->params.name, base, length);
     scene->params.name[length] = '\0';
-    return is_utf8(scene->params.name) && !has_control(scene->params.name, &length);
+    return is_utf8(scene->params.name);
 }
 
 int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
@@ -577,8 +578,8 @@ int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
         return -1;
     }
     if (!name_from_path && scene->set_file[field_index("scene", "name")] == SCENE_NOT_SET) {
-        snprintf(err, err_size, "%s: the file name cannot be the scene's name (longer than %d characters, "
-                 "not UTF-8 or holding a control character): set [scene] name", path, SCENE_TEXT - 1);
+        snprintf(err, err_size, "%s: the file name cannot be the scene's name (longer than %d characters "
+                 "or not UTF-8): set [scene] name", path, SCENE_TEXT - 1);
         return -1;
     }
     return 0;
