@@ -166,10 +166,10 @@ check_has "... saying to give --noise" "$tmp/e" "give --noise SIGMA or a '# nois
 sed '20s/,[^,]*,/,x,/' "$good" | "$bin" twin configs/fig6.ini --measured - --out "$tmp/est_bad.csv" >/dev/null 2>"$tmp/e"
 check_status "a bad row on standard input exits 2" 2 $? "$tmp/e"
 check_has "... naming its line" "$tmp/e" "standard input:20: base_accel 'x' is not a finite number"
-awk 'NR == 20 { for (i = 0; i < 600; ++i) printf "1"; print ""; next } { print }' "$good" \
+awk 'NR == 3 { printf "#"; for (i = 0; i < 600; ++i) printf " "; print "."; next } { print }' "$good" \
     | "$bin" twin configs/fig6.ini --measured - --out "$tmp/est_long.csv" >/dev/null 2>"$tmp/e"
 check_status "a line over 511 characters on standard input exits 2" 2 $? "$tmp/e"
-check_has "... naming its line" "$tmp/e" "standard input:20: longer than 511 characters"
+check_has "... naming its line" "$tmp/e" "standard input:3: longer than 511 characters"
 cat "$good" | "$bin" twin configs/fig6.ini --measured /dev/stdin --out "$tmp/est_dev.csv" >/dev/null 2>"$tmp/e"
 check_status "--measured /dev/stdin on a pipe exits 2" 2 $? "$tmp/e"
 check_has "... saying to use -" "$tmp/e" "/dev/stdin: cannot read measured-signals file: a FIFO (named pipe), not a regular file (a live stream: give --measured - and send it to standard input)"
