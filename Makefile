@@ -150,12 +150,13 @@ run: all
 endif
 
 # Every test in this REAL, then the core symbol check.
-test-one: $(TEST_BIN) $(OBJ)/beamslider
+test-one: $(TEST_BIN) $(OBJ)/beamslider $(TWIN_PACK)
 	@set -e; for t in $(TEST_BIN); do echo "== $$t"; ./$$t; done
 	@sh tests/check_core_symbols.sh $(REAL) $(CORE_OBJ)
 	@sh tests/check_core_includes.sh
 	@sh tests/check_cli.sh $(OBJ)/beamslider
 	@sh tests/check_outputs.sh $(OBJ)/beamslider
+	@sh tests/check_inputs.sh $(OBJ)/beamslider $(TWIN_PACK)
 	@sh tests/check_configs.sh $(OBJ)/beamslider
 	@sh tests/check_map.sh $(OBJ)/beamslider
 

@@ -38,12 +38,28 @@ typedef struct cli_output {
 
 #define CLI_MAX_OUTPUTS 4
 
+/* A file a command reads besides its scene: the option that names it and
+ * its path (NULL or "-": none, or standard input). */
+typedef struct cli_input {
+    const char *option;
+    const char *path;
+} cli_input;
+
 /* Opens every output asked for, or none (cli_output.c says how). Returns
  * CLI_OK; CLI_USAGE after reporting that two outputs are one file, or that
- * an output is the scene file, one of its bases or where standard output
- * goes; CLI_FAILED after reporting an output that cannot be opened (then no
- * file was truncated, and none was left behind). */
+ * an output is one of the command's inputs (the scene file, one of its
+ * bases, one of inputs: compared as files, through links) or where standard
+ * output goes; CLI_FAILED after reporting an output that cannot be opened
+ * (then no file was truncated, and none was left behind). */
+int cli_open_outputs_reading(cli_output *outputs, int count, const scene_file *scene, const cli_input *inputs,
+                             int input_count);
+
+/* The same for a command that reads nothing but its scene. */
 int cli_open_outputs(cli_output *outputs, int count, const scene_file *scene);
+
+/* 1 if path names the same existing file as an input of the scene (the
+ * file or a base; through links), with that input's path in *input. */
+int cli_is_scene_file(const char *path, const scene_file *scene, const char **input);
 
 /* Closes the outputs that are open, without checking them (on a failure). */
 void cli_close_outputs(cli_output *outputs, int count);

@@ -164,8 +164,29 @@ static char *command_text(int argc, char **argv)
     return text;
 }
 
+/* The tables the map writes into dir must not be the scene or a base (a
+ * scene named map.csv in its own --out folder would be replaced): 0, or -1
+ * after reporting. */
+static int writes_over_scene(const char *dir, const scene_file *scene)
+{
+    static const char *const tables[] = { MAP_RUNS_TABLE, MAP_POINTS_TABLE, MAP_IDENTITY_FILE };
+    char path[4200];
+    const char *input;
+    size_t i;
+    for (i = 0; i < sizeof tables / sizeof tables[0]; ++i) {
+        snprintf(path, sizeof path, "%s/%s", dir, tables[i]);
+        if (cli_is_scene_file(path, scene, &input)) {
+            cli_error("--out %s: %s is the scene file %s: it would be replaced", dir, path, input);
+            return -1;
+        }
+    }
+    return 0;
+}
+
 /* Reads dir's rows; writes the tables when every case is done. Sets done,
- * torn, invalid, complete of summary. 0, or -1 after reporting. */
+ * torn, invalid, complete of summary. CLI_OK, or after reporting CLI_USAGE
+ * (a result file refused: bad input) or CLI_FAILED (the tables not
+ * written; cases not done, when report_missing). */
 static int merge(const char *dir, const map_grid *grid, summary_map *m, int report_missing)
 {
     char err[2048];
@@ -173,7 +194,7 @@ static int merge(const char *dir, const map_grid *grid, summary_map *m, int repo
 
     if (map_found_read(dir, grid, &found, err, sizeof err) != 0) {
         cli_error("%s", err);
-        return -1;
+        return CLI_USAGE; /* a result file refused: bad input */
     }
     m->done_total = found.done;
     m->torn = found.torn;
@@ -185,13 +206,13 @@ static int merge(const char *dir, const map_grid *grid, summary_map *m, int repo
     if (m->complete && map_tables_write(dir, grid, found.row, err, sizeof err) != 0) {
         cli_error("%s", err);
         map_found_free(&found, grid->cases);
-        return -1;
+        return CLI_FAILED;
     }
     if (!m->complete && report_missing)
         cli_error("%s: %ld of %ld cases are not done yet (run the map command, or each of its shards, "
                   "again to finish them)", dir, grid->cases - found.done, grid->cases);
     map_found_free(&found, grid->cases);
-    return m->complete || !report_missing ? 0 : -1;
+    return m->complete || !report_missing ? CLI_OK : CLI_FAILED;
 }
 
 int cli_map(int argc, char **argv)
@@ -238,6 +259,11 @@ int cli_map(int argc, char **argv)
         cli_error("out of memory");
         map_grid_free(&grid);
         return CLI_FAILED;
+    }
+    if (writes_over_scene(cli.dir, &base) != 0) {
+        free(identity);
+        map_grid_free(&grid);
+        return CLI_USAGE;
     }
     switch (map_dir_claim(cli.dir, identity, err, sizeof err)) {
     case 0:
@@ -332,7 +358,7 @@ int cli_map_merge(int argc, char **argv)
     memset(&m, 0, sizeof m);
     m.grid = &grid;
     m.dir = argv[0];
-    status = merge(argv[0], &grid, &m, 1) == 0 ? CLI_OK : CLI_FAILED;
+    status = merge(argv[0], &grid, &m, 1);
     if (status == CLI_OK)
         fprintf(stderr, "map-merge: wrote %s/%s and %s/%s: %ld cases (%ld torn and %ld other lines ignored)\n",
                 argv[0], MAP_RUNS_TABLE, argv[0], MAP_POINTS_TABLE, grid.cases, m.torn, m.invalid);

@@ -27,6 +27,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include "cli.h"
+#include "input_file.h"
 #include "map_grid.h"
 #include "map_store.h"
 #include "map_table.h"
@@ -154,10 +155,16 @@ static int read_table(const char *dir, const map_grid *grid, int vx, int vy, con
     int failed = 0;
 
     snprintf(path, sizeof path, "%s/%s", dir, MAP_POINTS_TABLE);
-    in = fopen(path, "r");
-    if (!in) {
-        cli_error("%s: %s (all cases done? beamslider map-merge %s writes it)", path, strerror(errno), dir);
-        return -1;
+    {
+        char err[4600];
+        const char *verb;
+        if (input_file_open_why(path, INPUT_MAP_TABLE, &in, NULL, &verb, err, sizeof err) != 0) {
+            if (!strcmp(verb, "open"))
+                cli_error("%s: %s (all cases done? beamslider map-merge %s writes it)", path, err, dir);
+            else
+                cli_error("%s: cannot read %s: %s", path, input_kind_name(INPUT_MAP_TABLE), err);
+            return -1;
+        }
     }
     map_table_points_header(grid, header, sizeof header);
     while (!failed && fgets(line, sizeof line, in)) {

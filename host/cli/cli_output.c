@@ -1,7 +1,9 @@
-/* cli_output.c - the output files of run and sweep.
+/* cli_output.c - the output files of run, sweep, twin and twin-plant.
  *
- * Outputs must not clobber each other, the scene or what standard output
- * carries (the JSON summary), so they are compared as files, not as names:
+ * Outputs must not clobber each other, the command's inputs (the scene and
+ * its bases, a recorded excitation, a measured-signals file) or what
+ * standard output carries (the JSON summary), so they are compared as
+ * files, not as names:
  * an existing file by device and inode (./x.csv, x.csv, a symbolic or a hard
  * link, /dev/stdout all name one file), a file still to be created by the
  * real path of its folder and its name (a dangling symbolic link by the file
@@ -110,9 +112,10 @@ static int same_file(const file_identity *a, const file_identity *b)
 }
 
 /* 0, or CLI_USAGE after reporting that output i names the same file as
- * another output, the scene or one of its bases, or standard output. */
+ * another output, the scene or one of its bases, another input, or standard
+ * output. */
 static int check_overlaps(const cli_output *outputs, const file_identity *ids, int count,
-                          const scene_file *scene)
+                          const scene_file *scene, const cli_input *inputs, int input_count)
 {
     struct stat info;
     file_identity other;
@@ -136,6 +139,16 @@ static int check_overlaps(const cli_output *outputs, const file_identity *ids, i
             if (same_file(&ids[i], &other)) {
                 cli_error("%s %s is the scene%s file %s: it would be overwritten", outputs[i].option,
                           outputs[i].path, j ? "'s base" : "", scene->files[j]);
+                return CLI_USAGE;
+            }
+        }
+        for (j = 0; j < input_count; ++j) {
+            if (!inputs[j].path || !strcmp(inputs[j].path, "-"))
+                continue;
+            identify(inputs[j].path, &other, 0);
+            if (other.exists && same_file(&ids[i], &other)) {
+                cli_error("%s %s is the %s file %s: it would be overwritten", outputs[i].option, outputs[i].path,
+                          inputs[j].option, inputs[j].path);
                 return CLI_USAGE;
             }
         }
@@ -205,7 +218,28 @@ static int truncate_opened(const cli_output *outputs, const int *fds, int count)
     return 0;
 }
 
+int cli_is_scene_file(const char *path, const scene_file *scene, const char **input)
+{
+    file_identity id, other;
+    int j;
+    identify(path, &id, 0);
+    for (j = 0; id.exists && j < scene->file_count; ++j) {
+        identify(scene->files[j], &other, 0);
+        if (same_file(&id, &other)) {
+            *input = scene->files[j];
+            return 1;
+        }
+    }
+    return 0;
+}
+
 int cli_open_outputs(cli_output *outputs, int count, const scene_file *scene)
+{
+    return cli_open_outputs_reading(outputs, count, scene, NULL, 0);
+}
+
+int cli_open_outputs_reading(cli_output *outputs, int count, const scene_file *scene, const cli_input *inputs,
+                             int input_count)
 {
     file_identity ids[CLI_MAX_OUTPUTS];
     int fds[CLI_MAX_OUTPUTS];
@@ -224,7 +258,7 @@ int cli_open_outputs(cli_output *outputs, int count, const scene_file *scene)
         if (outputs[i].path)
             identify(outputs[i].path, &ids[i], 0);
     }
-    if ((status = check_overlaps(outputs, ids, count, scene)) != 0)
+    if ((status = check_overlaps(outputs, ids, count, scene, inputs, input_count)) != 0)
         return status;
     for (i = 0; i < count; ++i) {
         if (!outputs[i].path)
@@ -237,7 +271,8 @@ int cli_open_outputs(cli_output *outputs, int count, const scene_file *scene)
         }
     }
     identify_opened(fds, ids, count);
-    if ((status = check_overlaps(outputs, ids, count, scene)) != 0 || truncate_opened(outputs, fds, count) != 0) {
+    if ((status = check_overlaps(outputs, ids, count, scene, inputs, input_count)) != 0
+        || truncate_opened(outputs, fds, count) != 0) {
         undo_opens(outputs, fds, created, count);
         return status ? status : CLI_FAILED;
     }

@@ -10,6 +10,7 @@
 #include "excitation_file.h"
 #include "run.h"
 #include "scene_build.h"
+#include "scene_limits.h"
 #include "summary.h"
 
 typedef struct run_cli {
@@ -145,59 +146,49 @@ static int parse_options(int argc, char **argv, run_cli *cli, scene_file *file)
     return 0;
 }
 
-/* The recorded excitation of --excitation as step means for options (its
- * t_end: the record's whole steps unless --t-end was given). 0, or -1
- * after reporting why (record and *means then hold nothing to free). */
-static int load_record(const run_cli *cli, const scene_file *file, run_options *options,
-                       excitation_file *record, double **means)
-{
-    char err[1024];
-    uint64_t steps;
+/* The recorded excitation of --excitation, read once and checked for the
+ * run (its t_end: the record's whole steps unless --t-end was given; every
+ * step mean within the range the scene's [excitation] acceleration may take),
+ * then opened again for the run to read as it goes. 0, or -1 after reporting
+ * why (then nothing is open). */
+typedef struct run_record {
+    excitation_file file;
+    excitation_stream stream;
+    char err[1024];       /* why the stream stopped */
+} run_record;
 
-    *means = NULL;
+static int load_record(const run_cli *cli, const scene_file *file, run_options *options, run_record *record)
+{
+    excitation_run plan;
+    double low;
+
     if (file->params.schedule[strspn(file->params.schedule, " \t")]) {
         char where[SCENE_PATH + 64];
         cli_error("%s: [excitation] schedule and --excitation both set the excitation: remove one",
                   scene_where(file, "excitation", "schedule", where, sizeof where));
         return -1;
     }
-    if (excitation_file_read(cli->excitation_path, &cli->record, record, err, sizeof err) != 0) {
-        cli_error("%s", err);
+    plan.dt = options->dt;
+    plan.steps = cli->t_end_given ? run_step_count(options->t_end, options->dt) : 0;
+    if (scene_limits_range(file, "excitation", "acceleration", &low, &plan.max_mean) != 0) {
+        cli_error("%s: no base acceleration is within the core's range with this scene", cli->excitation_path);
         return -1;
     }
-    if (cli->t_end_given) {
-        steps = run_step_count(options->t_end, options->dt);
-    } else {
-        steps = excitation_file_steps(record, options->dt);
-        if (steps == 0) {
-            cli_error("%s: the record (%lu samples at %g Hz from t = %g s, latency %g s) covers no step "
-                      "of dt = %g s from t = 0", record->path, (unsigned long)record->samples, record->rate,
-                      record->t0, record->latency, options->dt);
-            excitation_file_free(record);
-            return -1;
-        }
-        options->t_end = (double)steps * options->dt;
+    if (excitation_file_read(cli->excitation_path, &cli->record, &plan, &record->file, record->err,
+                             sizeof record->err) != 0
+        || excitation_stream_open(&record->stream, &record->file, options->dt, record->err, sizeof record->err) != 0) {
+        cli_error("%s", record->err);
+        return -1;
     }
-    *means = malloc(steps > 0 ? steps * sizeof **means : 1);
-    if (!*means)
-        cli_error("%s: %lu steps: out of memory", record->path, (unsigned long)steps);
-    else if (excitation_file_means(record, options->dt, steps, *means, err, sizeof err) != 0)
-        cli_error("%s", err);
-    else
-        return 0;
-    free(*means);
-    *means = NULL;
-    excitation_file_free(record);
-    return -1;
+    options->t_end = (double)record->file.steps * options->dt;
+    return 0;
 }
 
-/* Frees what load_record gave (nothing when means is NULL). */
-static void free_record(excitation_file *record, double *means)
+/* run_options.base_accel of a record: its next step mean. */
+static int record_mean(void *source, double *mean)
 {
-    if (!means)
-        return;
-    free(means);
-    excitation_file_free(record);
+    run_record *record = source;
+    return excitation_stream_next(&record->stream, mean, record->err, sizeof record->err);
 }
 
 /* Closes an output; reports and returns -1 if it misses anything: its own
@@ -209,7 +200,7 @@ static int close_output(const char *path, FILE *file, const run_result *result)
     if (cli_close_output(path, file, result->write_errno) != 0)
         return -1;
     if (result->write_failed) {
-        cli_error("%s holds the run only up to t = %.6f s: it stopped at a write error", path, result->t);
+        cli_error("%s holds the run only up to t = %.9g s: it stopped at a write error", path, result->t);
         return -1;
     }
     return 0;
@@ -224,10 +215,11 @@ int cli_run(int argc, char **argv)
     run_options options;
     run_result result;
     schedule excitation;
-    excitation_file record;
-    double *means = NULL;
+    static run_record record; /* static: its line buffer */
+    int measured;
     char err[1024];
     cli_output outputs[2];
+    cli_input record_input;
     FILE *csv, *periods;
     int failed, status;
 
@@ -239,15 +231,19 @@ int cli_run(int argc, char **argv)
     }
     options.t_end = file.params.t_end;
     options.dt = file.params.dt;
-    if (cli.excitation_path && load_record(&cli, &file, &options, &record, &means) != 0)
+    measured = cli.excitation_path != NULL;
+    if (measured && load_record(&cli, &file, &options, &record) != 0)
         return CLI_USAGE;
     /* outputs are opened only once the input is known to be good */
     outputs[0].option = "--out";
     outputs[0].path = cli.out_path;
     outputs[1].option = "--periods";
     outputs[1].path = cli.periods_path;
-    if ((status = cli_open_outputs(outputs, 2, &file)) != CLI_OK) {
-        free_record(&record, means);
+    record_input.option = "--excitation";
+    record_input.path = cli.excitation_path;
+    if ((status = cli_open_outputs_reading(outputs, 2, &file, &record_input, 1)) != CLI_OK) {
+        if (measured)
+            excitation_stream_close(&record.stream);
         return status;
     }
     csv = outputs[0].file;
@@ -262,7 +258,8 @@ int cli_run(int argc, char **argv)
     /* the file's schedule was checked when it was read */
     options.excitation_schedule = schedule_parse(file.params.schedule, &excitation, err, sizeof err) == 0
                                       ? &excitation : NULL;
-    options.base_accel = means;
+    options.base_accel = measured ? record_mean : NULL;
+    options.base_accel_source = &record;
     failed = run_scene(&scene, &options, &result) != 0;
     /* a write error ends the run: then both files are reported incomplete */
     {
@@ -271,13 +268,16 @@ int cli_run(int argc, char **argv)
         if (csv_lost || periods_lost)
             result.write_failed = failed = 1;
     }
-    if (result.status != BS_OK)
-        cli_error("%s: stopped at t = %.6f s (step %llu): %s; state and CSV kept up to the last good step",
+    if (result.input_failed)
+        cli_error("%s; state and CSV kept up to t = %.6g s", record.err, result.t);
+    else if (result.status != BS_OK)
+        cli_error("%s: stopped at t = %.9g s (step %llu): %s; state and CSV kept up to the last good step",
                   file.params.name, result.t, (unsigned long long)result.steps, bs_status_text(result.status));
-    if (summary_print_run(stdout, &file, &scene, means ? &record : NULL, &result) != 0) {
+    if (summary_print_run(stdout, &file, &scene, measured ? &record.file : NULL, &result) != 0) {
         cli_error("cannot write the summary (out of memory?)");
         failed = 1;
     }
-    free_record(&record, means);
+    if (measured)
+        excitation_stream_close(&record.stream);
     return failed ? CLI_FAILED : CLI_OK;
 }

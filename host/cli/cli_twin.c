@@ -5,18 +5,9 @@
  *   beamslider twin SCENE --measured FILE.csv --out EST.csv [...]   the twin on it
  *   beamslider twin-gains SCENE [...]                   the observer's constants as a C header
  *
- * The measured-signals file (written by twin-plant, or by any plant):
- *
- *   # beamslider measured signals       comment lines "# key = value" first:
- *   # sample_rate = 50000 Hz            samples per second, must be 1/dt of the twin's scene
- *   # signal = deflection               deflection (w(4L/7) [m]) or voltage (patch voltage [V])
- *   # noise = 1.2e-07                   optional: noise std of signal [m or V]
- *   # accel_noise = 0.099               optional: noise std of base_accel [m/s^2]
- *   t,base_accel,signal[,s_true]        the column line
- *   2e-05,-13.99,1.2e-07,0.3            one row per step k = 1, 2, ...: t = k dt [s],
- *                                       base_accel the mean over (t - dt, t] [m/s^2],
- *                                       signal at t (late by the sensor's latency),
- *                                       s_true the plant's x_C / L if known (scoring only)
+ * The measured-signals file (written by twin-plant, or by any plant) has one
+ * grammar and one reader, host/lib/measured_signals.h; `twin --measured -`
+ * reads it from standard input, once, as it comes.
  */
 #include <errno.h>
 #include <math.h>
@@ -24,10 +15,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include "bs_observer.h"
 #include "bs_platform.h"
 #include "cli.h"
+#include "measured_signals.h"
 #include "observer_design.h"
 #include "out_c.h"
 #include "out_json.h"
@@ -35,10 +26,9 @@
 #include "scene_build.h"
 
 #define MAX_SETS 16
-#define LINE 512
 
 static const char twin_usage[] =
-    "usage: beamslider twin SCENE.ini --measured FILE.csv --out EST.csv [--signal deflection|voltage]\n"
+    "usage: beamslider twin SCENE.ini --measured FILE.csv|- --out EST.csv [--signal deflection|voltage]\n"
     "                       [--latency S] [--noise SIGMA] [--accel-noise SIGMA] [--force-noise N]\n"
     "                       [--s0 S] [--every N] [--open-loop] [--no-position] [--lockin TAU]\n"
     "                       [--position-gain G] [--position-rate R] [--deadband D] [--score-after T] [--tolerance D]\n"
@@ -46,6 +36,7 @@ static const char twin_usage[] =
     "  runs the scene as a twin on the measured base acceleration, corrected from the measured\n"
     "  signal (docs/twin.md, \"Observer\"); EST.csv every N steps: t, s_hat, s_sigma, amplitude,\n"
     "  power, y, y_hat, s_true (if the file has it), phase_error, s_error. JSON summary on stdout.\n"
+    "  --measured -: a live stream on standard input, read once to its end (give --noise).\n"
     "usage: beamslider twin-plant SCENE.ini --out FILE.csv [--signal deflection|voltage] [--snr DB]\n"
     "                       [--accel-snr DB] [--bits B] [--seed N] [--latency S] [--freq-scale X]\n"
     "                       [--s0 S] [--t-end T] [--set SECTION.KEY=VALUE]...\n"
@@ -286,9 +277,12 @@ static int load_scene(const twin_cli *c, scene_file *file, bs_scene *scene, scen
     return 0;
 }
 
+/* --latency in steps; beyond BS_OBSERVER_MAX_LATENCY (refused by the
+ * callers) the quotient is not converted: it may exceed a long. */
 static long latency_steps(const twin_cli *c, double dt)
 {
-    return lround(c->latency / dt);
+    const double steps = c->latency / dt;
+    return steps < BS_OBSERVER_MAX_LATENCY + 1.0 ? lround(steps) : BS_OBSERVER_MAX_LATENCY + 1;
 }
 
 /* ---- twin-plant ---- */
@@ -373,7 +367,7 @@ static int plant_pass(const bs_scene *scene, const scene_file *file, const twin_
         }
         a = quantise(a + a_noise * gaussian(&rng), 2.0 * stats->a_max, c->bits);
         y = quantise(y + y_noise * gaussian(&rng), 2.0 * stats->y_max, c->bits);
-        if (fprintf(out, "%.9g,%.9g,%.9g,%.9g\n", (double)k * file->params.dt, a, y,
+        if (fprintf(out, "%.12g,%.9g,%.9g,%.9g\n", (double)k * file->params.dt, a, y, /* t to 1e-12: long runs */
                     (double)bs_sim_position(&sim)) < 0)
             return -1;
     }
@@ -423,6 +417,7 @@ static int cli_twin_plant(int argc, char **argv)
     out_text_one_line(plant); /* a line break in the name would forge header lines */
     if ((status = cli_open_outputs(&output, 1, &file)) != CLI_OK)
         return status;
+    /* exactly the grammar of host/lib/measured_signals.h */
     failed = fprintf(output.file,
                      "# beamslider measured signals (docs/twin.md, \"Observer\")\n"
                      "# plant = %s, s0 %.6g, freq_scale %.6g, snr %g dB, accel_snr %g dB, bits %d, seed %lu\n"
@@ -453,124 +448,48 @@ static int cli_twin_plant(int argc, char **argv)
     return CLI_OK;
 }
 
-/* ---- the measured-signals file ---- */
+/* ---- the measured-signals file (host/lib/measured_signals.h: the one reader) ---- */
 
+/* What the twin takes from the file before it runs. */
 typedef struct measured_file {
-    FILE *in;
-    const char *path;
-    long line;
-    double rate, noise, accel_noise;
-    int signal, has_truth;
-    /* first pass */
-    uint64_t rows;
-    double y_sq;
+    measured_reader reader;
+    int is_stdin;          /* --measured -: read once, as it comes */
+    double y_sq;           /* sum of signal^2 over the rows (a file's first pass) */
 } measured_file;
 
-/* The comment lines and the column line. */
-static int read_header(measured_file *m)
-{
-    char line[LINE], key[64], value[LINE];
-    m->rate = m->noise = m->accel_noise = NAN;
-    m->signal = -1;
-    m->line = 0;
-    while (fgets(line, sizeof line, m->in)) {
-        ++m->line;
-        if (line[0] != '#') {
-            line[strcspn(line, "\r\n")] = 0;
-            if (!strcmp(line, "t,base_accel,signal") || !strcmp(line, "t,base_accel,signal,s_true")) {
-                m->has_truth = !strcmp(line, "t,base_accel,signal,s_true");
-                return 0;
-            }
-            cli_error("%s:%ld: expected the column line t,base_accel,signal[,s_true], got '%s'", m->path, m->line,
-                      line);
-            return -1;
-        }
-        if (sscanf(line, "# %63[a-z_] = %511s", key, value) != 2)
-            continue; /* free comment */
-        if (!strcmp(key, "sample_rate"))
-            m->rate = strtod(value, NULL);
-        else if (!strcmp(key, "noise"))
-            m->noise = strtod(value, NULL);
-        else if (!strcmp(key, "accel_noise"))
-            m->accel_noise = strtod(value, NULL);
-        else if (!strcmp(key, "signal") && parse_signal(value, &m->signal) != 0) {
-            cli_error("%s:%ld: signal = %s: allowed: deflection, voltage", m->path, m->line, value);
-            return -1;
-        }
-    }
-    cli_error("%s: no column line t,base_accel,signal[,s_true]", m->path);
-    return -1;
-}
-
-/* One row; returns 1 at the end of the file, -1 on a bad row. */
-static int read_row(measured_file *m, double *t, double *a, double *y, double *s_true)
-{
-    char line[LINE], *p, *end;
-    double v[4];
-    int i, n = m->has_truth ? 4 : 3;
-    if (!fgets(line, sizeof line, m->in))
-        return 1;
-    ++m->line;
-    for (p = line, i = 0; i < n; ++i) {
-        errno = 0;
-        v[i] = strtod(p, &end);
-        if (end == p || errno || !isfinite(v[i]) || (i < n - 1 ? *end != ',' : (*end && *end != '\n' && *end != '\r'))) {
-            cli_error("%s:%ld: expected %d finite numbers separated by commas", m->path, m->line, n);
-            return -1;
-        }
-        p = end + 1;
-    }
-    *t = v[0];
-    *a = v[1];
-    *y = v[2];
-    *s_true = m->has_truth ? v[3] : (double)NAN;
-    return 0;
-}
-
+/* Opens --measured: the header (its rate must be 1/dt of the scene) and, for
+ * a file, every row checked in a first pass before anything is written.
+ * Standard input is read once: the rows are checked as the twin reads them.
+ * 0, or -1 after reporting (nothing left open). */
 static int open_measured(measured_file *m, const char *path, double dt)
 {
-    double t, a, y, s;
+    measured_reader *r = &m->reader;
+    measured_row row;
+    char err[1024];
     int status;
-    memset(m, 0, sizeof *m);
-    m->path = path;
-    m->in = fopen(path, "r");
-    if (!m->in) {
-        cli_error("%s: %s", path, strerror(errno));
-        return -1;
-    }
-    if (read_header(m) != 0)
-        return -1;
-    if (!(fabs(m->rate * dt - 1.0) <= 1e-9)) {
-        cli_error("%s: sample_rate = %g Hz, but the scene's dt = %g s needs %.10g Hz (resample the record)", path, m->rate,
-                  dt, 1.0 / dt);
-        return -1;
-    }
-    while ((status = read_row(m, &t, &a, &y, &s)) == 0) {
-        /* row k holds t = k dt: a missing, repeated or misplaced row is a gap
-         * or another rate, and the twin would run on a shifted signal */
-        const double expected = (double)(m->rows + 1) * dt;
-        if (!(fabs(t - expected) <= 0.01 * dt)) {
-            cli_error("%s:%ld: t = %.10g s, expected %.10g s (row %llu at dt = %g s): a gap, a repeated row or "
-                      "another sample rate", path, m->line, t, expected, (unsigned long long)(m->rows + 1), dt);
-            return -1;
-        }
-        m->rows += 1;
-        m->y_sq += y * y;
-    }
-    if (status < 0)
-        return -1;
-    if (m->rows == 0) {
-        cli_error("%s: no rows", path);
-        return -1;
-    }
-    rewind(m->in);
-    return read_header(m);
-}
 
-static int same_file(const char *a, const char *b)
-{
-    struct stat sa, sb;
-    return a && b && stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+    memset(m, 0, sizeof *m);
+    m->is_stdin = !strcmp(path, "-");
+    if (measured_open(r, path, err, sizeof err) != 0) {
+        cli_error("%s", err);
+        return -1;
+    }
+    if (!(fabs(r->header.rate * dt - 1.0) <= 1e-9)) {
+        cli_error("%s: sample_rate = %g Hz, but the scene's dt = %g s needs %.10g Hz (resample the record)", r->path,
+                  r->header.rate, dt, 1.0 / dt);
+        measured_close(r);
+        return -1;
+    }
+    if (m->is_stdin)
+        return 0;
+    while ((status = measured_next(r, &row, err, sizeof err)) > 0)
+        m->y_sq += row.signal * row.signal;
+    if (status < 0 || measured_rewind(r, err, sizeof err) != 0) {
+        cli_error("%s", err);
+        measured_close(r);
+        return -1;
+    }
+    return 0;
 }
 
 /* ---- twin-gains and twin ---- */
@@ -638,11 +557,13 @@ static int write_estimate(FILE *out, double t, const bs_observer_estimate *e, do
 }
 
 static int run_twin(const twin_cli *c, const bs_scene *scene, const scene_file *file, const bs_observer_gains *gains,
-                    measured_file *m, FILE *out, twin_tally *tally)
+                    measured_file *m, FILE *out, twin_tally *tally, int *bad_input)
 {
     static bs_sim sim;
     static bs_observer obs;
     bs_observer_options options = bs_observer_defaults();
+    measured_row sample;
+    char err[1024];
     double t, a, y, s_true;
     int row;
     bs_status status = bs_sim_init(&sim, scene, BS_MODEL_FREE, (bs_real)file->params.s0);
@@ -668,10 +589,14 @@ static int run_twin(const twin_cli *c, const bs_scene *scene, const scene_file *
     tally->s_true = NAN;
     if (fprintf(out, "t,s_hat,s_sigma,amplitude,power,y,y_hat,s_true,phase_error,s_error\n") < 0)
         return -1;
-    while ((row = read_row(m, &t, &a, &y, &s_true)) == 0) {
+    while ((row = measured_next(&m->reader, &sample, err, sizeof err)) > 0) {
+        t = sample.t;
+        a = sample.base_accel;
+        y = sample.signal;
+        s_true = sample.s_true;
         status = bs_observer_step(&obs, &sim, (bs_real)a, (bs_real)y);
         if (status != BS_OK) {
-            cli_error("%s:%ld: the twin stopped: %s", m->path, m->line, bs_status_text(status));
+            cli_error("%s:%ld: the twin stopped: %s", m->reader.path, m->reader.lines.line, bs_status_text(status));
             return -1;
         }
         tally->rows += 1;
@@ -687,7 +612,12 @@ static int run_twin(const twin_cli *c, const bs_scene *scene, const scene_file *
         if (tally->rows % (uint64_t)c->every == 0 && write_estimate(out, t, &tally->last, s_true) != 0)
             return -1;
     }
-    return row < 0 ? -1 : 0;
+    if (row < 0) { /* a file's rows were checked before: a bad row of standard input */
+        cli_error("%s%s", err, m->is_stdin ? " (the estimates up to it are written)" : "");
+        *bad_input = 1;
+        return -1;
+    }
+    return 0;
 }
 
 /* The summary through the JSON writer (out_json.h: NaN as null, such as
@@ -727,8 +657,10 @@ static int cli_twin_run(int argc, char **argv)
     measured_file m;
     twin_tally tally;
     cli_output output;
+    cli_input measured_input;
+    const measured_header *header;
     double noise, start;
-    int status, failed;
+    int status, failed, bad_input = 0;
 
     if (parse_options(argc, argv, "twin", &c) != 0 || load_scene(&c, &file, &scene, &model) != 0)
         return CLI_USAGE;
@@ -736,45 +668,51 @@ static int cli_twin_run(int argc, char **argv)
         cli_error("twin needs --measured FILE.csv and --out EST.csv");
         return CLI_USAGE;
     }
-    if (same_file(c.measured_path, c.out_path)) {
-        cli_error("--out %s is the --measured file", c.out_path);
+    if (open_measured(&m, c.measured_path, file.params.dt) != 0)
+        return CLI_USAGE;
+    header = &m.reader.header;
+    if (c.signal >= 0 && c.signal != header->signal) {
+        cli_error("--signal %s contradicts %s's signal = %s", c.signal ? "voltage" : "deflection", m.reader.path,
+                  measured_signal_name(header->signal));
+        measured_close(&m.reader);
         return CLI_USAGE;
     }
-    if (open_measured(&m, c.measured_path, file.params.dt) != 0) {
-        if (m.in)
-            fclose(m.in);
+    c.signal = header->signal == MEASURED_VOLTAGE ? BS_SIGNAL_VOLTAGE : BS_SIGNAL_DEFLECTION;
+    /* the noise: stated, else the file's, else 40 dB below the signal's RMS
+     * (a file's first pass measured it; standard input cannot be measured
+     * in advance) */
+    if (isnan(c.noise) && isnan(header->noise) && m.is_stdin) {
+        cli_error("--measured -: standard input is read once, so the twin cannot measure the signal's RMS "
+                  "first: give --noise SIGMA or a '# noise = ...' header line");
+        measured_close(&m.reader);
         return CLI_USAGE;
     }
-    if (c.signal >= 0 && m.signal >= 0 && c.signal != m.signal) {
-        cli_error("--signal contradicts %s's signal line", c.measured_path);
-        fclose(m.in);
-        return CLI_USAGE;
-    }
-    if (c.signal < 0)
-        c.signal = m.signal >= 0 ? m.signal : BS_SIGNAL_DEFLECTION;
-    /* the noise: stated, else the file's, else 40 dB below the signal's RMS */
-    noise = !isnan(c.noise) ? c.noise : !isnan(m.noise) && m.noise > 0.0 ? m.noise : 0.01 * sqrt(m.y_sq / (double)m.rows);
-    if (design(&c, &file, &model, &scene, c.signal, noise, !isnan(c.accel_noise) ? c.accel_noise : m.accel_noise, &gains) != 0) {
-        fclose(m.in);
+    noise = !isnan(c.noise) ? c.noise : !isnan(header->noise) ? header->noise
+                                                              : 0.01 * sqrt(m.y_sq / (double)m.reader.rows);
+    if (design(&c, &file, &model, &scene, c.signal, noise,
+               !isnan(c.accel_noise) ? c.accel_noise : header->accel_noise, &gains) != 0) {
+        measured_close(&m.reader);
         return CLI_USAGE;
     }
     output.option = "--out";
     output.path = c.out_path;
-    if ((status = cli_open_outputs(&output, 1, &file)) != CLI_OK) {
-        fclose(m.in);
+    measured_input.option = "--measured";
+    measured_input.path = c.measured_path;
+    if ((status = cli_open_outputs_reading(&output, 1, &file, &measured_input, 1)) != CLI_OK) {
+        measured_close(&m.reader);
         return status;
     }
     start = bs_platform_seconds();
-    failed = run_twin(&c, &scene, &file, &gains, &m, output.file, &tally) != 0;
+    failed = run_twin(&c, &scene, &file, &gains, &m, output.file, &tally, &bad_input) != 0;
     tally.elapsed = bs_platform_seconds() - start;
-    fclose(m.in);
+    measured_close(&m.reader);
     if (cli_close_output(c.out_path, output.file, 0) != 0)
         failed = 1;
     if (print_summary(&c, &file, &gains, &tally, noise) != 0) {
         cli_error("cannot write the summary (out of memory?)");
         failed = 1;
     }
-    return failed ? CLI_FAILED : CLI_OK;
+    return bad_input ? CLI_USAGE : failed ? CLI_FAILED : CLI_OK;
 }
 
 static int wants_help(int argc, char **argv)

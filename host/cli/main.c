@@ -18,7 +18,7 @@ static const char usage[] =
     "                [--out FILE.csv] [--every N] [--periods FILE.csv] [--set section.key=value ...]\n"
     "                         simulate; CSV rows every N steps, one row per excitation\n"
     "                         period with --periods, JSON summary on stdout\n"
-    "  twin SCENE.ini --measured FILE.csv --out EST.csv [--signal deflection|voltage]\n"
+    "  twin SCENE.ini --measured FILE.csv|- --out EST.csv [--signal deflection|voltage]\n"
     "                [--latency S] [--noise SIGMA] ...\n"
     "                         the twin corrected from measured signals (beamslider twin --help)\n"
     "  twin-plant SCENE.ini --out FILE.csv [--snr DB] [--freq-scale X] ...\n"

@@ -14,6 +14,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "bs_revision.h"
+#include "input_file.h"
 #include "map_case.h"
 #include "out_text.h"
 #include "scene_values.h"
@@ -210,23 +211,25 @@ static int compare_identities(const char *dir, const char *a, const char *b, cha
     }
 }
 
-/* The whole of a file, malloc'd and NUL-terminated; NULL with errno. */
-static char *read_all(const char *path)
+/* The whole of an identity file (opened as every input is, input_file.h),
+ * malloc'd and NUL-terminated; NULL with why (the path named) set. */
+static char *read_all(const char *path, char *why, size_t why_size)
 {
-    FILE *in = fopen(path, "r");
+    FILE *in;
     char *data = NULL;
     size_t used = 0, size = 0;
 
-    if (!in)
+    if (input_file_open(path, INPUT_MAP_IDENTITY, &in, NULL, why, why_size) != 0)
         return NULL;
     for (;;) {
         size_t n;
         if (used + 4096 + 1 > size) {
             char *grown = realloc(data, size ? 2 * size : 8192);
-            if (!grown) {
-                free(data);
+            if (!grown || (long long)used > input_kind_max_bytes(INPUT_MAP_IDENTITY)) { /* a file that grows */
+                free(grown ? grown : data);
                 fclose(in);
-                errno = ENOMEM;
+                snprintf(why, why_size, "%s: cannot read map identity: %s", path,
+                         grown ? "it grew past its bound while being read" : strerror(ENOMEM));
                 return NULL;
             }
             data = grown;
@@ -240,7 +243,7 @@ static char *read_all(const char *path)
     if (ferror(in)) {
         free(data);
         fclose(in);
-        errno = EIO;
+        snprintf(why, why_size, "%s: cannot read map identity: %s", path, strerror(EIO));
         return NULL;
     }
     fclose(in);
@@ -298,24 +301,71 @@ static int publish_identity(const char *dir, const char *identity, char *err, si
     return status;
 }
 
-/* Makes dir, or finds it a folder; *created = 1 if this call made it. 0 or
- * -1 with err. */
-static int make_folder(const char *dir, int *created, char *err, size_t size)
+/* Creates dir and the folders above it that are missing (mkdir -p; another
+ * shard may make one at the same time: EEXIST is fine). Returns 1 + the
+ * length of the first folder it created (for remove_folders), 0 if another
+ * made them all, or -1 with err naming the folder that could not be made
+ * and why; *made_dir = 1 if this call made dir itself (not another shard). */
+static int make_folders(const char *dir, int *made_dir, char *err, size_t size)
 {
-    struct stat info;
+    char prefix[4200];
+    const size_t length = strlen(dir);
+    size_t end;
+    int first = 0;
 
-    *created = mkdir(dir, 0777) == 0;
-    if (*created)
-        return 0;
-    if (errno != EEXIST) { /* EEXIST: there already, or another shard made it just now */
-        snprintf(err, size, "--out %s: cannot create the folder: %s", dir, strerror(errno));
-        return -1;
+    for (end = 1; end <= length; ++end) {
+        struct stat info;
+        if (end < length && dir[end] != '/')
+            continue;
+        if (dir[end - 1] == '/')
+            continue; /* "//" */
+        memcpy(prefix, dir, end);
+        prefix[end] = '\0';
+        if (stat(prefix, &info) == 0) {
+            if (!S_ISDIR(info.st_mode)) {
+                snprintf(err, size, "--out %s: cannot create the folder: %s is a file, not a folder", dir, prefix);
+                return -1;
+            }
+            continue;
+        }
+        if (errno != ENOENT) {
+            snprintf(err, size, "--out %s: cannot create the folder %s: %s", dir, prefix, strerror(errno));
+            return -1;
+        }
+        if (mkdir(prefix, 0777) != 0) {
+            if (errno != EEXIST) {
+                snprintf(err, size, "--out %s: cannot create the folder %s: %s", dir, prefix, strerror(errno));
+                return -1;
+            }
+            if (stat(prefix, &info) != 0 || !S_ISDIR(info.st_mode)) { /* another made a file there */
+                snprintf(err, size, "--out %s: cannot create the folder: %s is a file, not a folder", dir, prefix);
+                return -1;
+            }
+            continue; /* another shard made it just now */
+        }
+        if (end == length)
+            *made_dir = 1;
+        if (!first)
+            first = (int)end + 1;
     }
-    if (stat(dir, &info) != 0 || !S_ISDIR(info.st_mode)) {
-        snprintf(err, size, "--out %s: not a folder", dir);
-        return -1;
+    return first;
+}
+
+/* Removes the folders make_folders created (1 + the length of the first), deepest first. */
+static void remove_folders(const char *dir, int created)
+{
+    char prefix[4200];
+    size_t end = strlen(dir);
+    snprintf(prefix, sizeof prefix, "%s", dir);
+    while (end + 1 >= (size_t)created && end > 0) {
+        prefix[end] = '\0';
+        if (rmdir(prefix) != 0)
+            return;
+        while (end > 0 && prefix[end - 1] != '/')
+            --end;
+        while (end > 0 && prefix[end - 1] == '/')
+            --end;
     }
-    return 0;
 }
 
 /* Shards started together race here, so every step allows for another
@@ -328,13 +378,13 @@ int map_dir_claim(const char *dir, const char *identity, char *err, size_t size)
 {
     char path[4200];
     char *there;
-    int created, status;
+    int created = 0, first_made, status;
 
     if (strlen(dir) > 4000) {
         snprintf(err, size, "--out %.40s...: path too long", dir);
         return -1;
     }
-    if (make_folder(dir, &created, err, size) != 0)
+    if ((first_made = make_folders(dir, &created, err, size)) < 0)
         return -1;
     snprintf(path, sizeof path, "%s/" MAP_IDENTITY_FILE, dir);
     if (access(path, F_OK) != 0) {
@@ -345,18 +395,16 @@ int map_dir_claim(const char *dir, const char *identity, char *err, size_t size)
         }
         status = publish_identity(dir, identity, err, size);
         if (status < 0) {
-            if (created)
-                rmdir(dir);
+            if (first_made > 0)
+                remove_folders(dir, first_made);
             return -1;
         }
         if (status == 0)
             return 0;
     }
-    there = read_all(path);
-    if (!there) {
-        snprintf(err, size, "cannot read %s: %s", path, strerror(errno));
+    there = read_all(path, err, size);
+    if (!there)
         return -1;
-    }
     status = compare_identities(dir, there, identity, err, size);
     if (status == 0) {
         size_t la = 0, lb = 0;
@@ -450,7 +498,7 @@ static const char *read_vary(map_grid *grid, const char *line, size_t length)
 
 int map_identity_read(const char *dir, map_grid *grid, char *scene, char *err, size_t size)
 {
-    char path[4200];
+    char path[4200], unread[4400];
     char *identity;
     const char *line, *why = NULL;
     long number = 0;
@@ -459,9 +507,9 @@ int map_identity_read(const char *dir, map_grid *grid, char *scene, char *err, s
     map_grid_init(grid);
     snprintf(scene, SCENE_TEXT, "map");
     snprintf(path, sizeof path, "%s/" MAP_IDENTITY_FILE, dir);
-    identity = read_all(path);
+    identity = read_all(path, unread, sizeof unread);
     if (!identity) {
-        snprintf(err, size, "%s: no map here: cannot read %s: %s", dir, path, strerror(errno));
+        snprintf(err, size, "%s: no map here: %s", dir, unread);
         return -1;
     }
     for (line = identity; *line && !why; line += strcspn(line, "\n") + 1) {
@@ -531,16 +579,17 @@ static int is_results_name(const struct dirent *entry)
     return n > 9 && !strncmp(entry->d_name, "runs-", 5) && !strcmp(entry->d_name + n - 4, ".csv");
 }
 
-/* Takes one file's lines into found. */
-static void read_results_file(const char *path, const map_grid *grid, map_found *found)
+/* Takes one file's lines into found (opened as every input is,
+ * input_file.h): 0, or -1 with err. */
+static int read_results_file(const char *path, const map_grid *grid, map_found *found, char *err, size_t size)
 {
-    FILE *in = fopen(path, "r");
+    FILE *in;
     char *line = NULL;
     size_t capacity = 0;
     ssize_t length;
 
-    if (!in)
-        return;
+    if (input_file_open(path, INPUT_MAP_RESULTS, &in, NULL, err, size) != 0)
+        return -1;
     while ((length = getline(&line, &capacity, in)) > 0) {
         long c;
         if (!strncmp(line, "case,", 5))
@@ -577,13 +626,14 @@ static void read_results_file(const char *path, const map_grid *grid, map_found 
     }
     free(line);
     fclose(in);
+    return 0;
 }
 
 int map_found_read(const char *dir, const map_grid *grid, map_found *found, char *err, size_t size)
 {
     struct dirent **names;
     char path[4400];
-    int count, i;
+    int count, i, failed = 0;
 
     memset(found, 0, sizeof *found);
     found->row = calloc((size_t)grid->cases, sizeof *found->row);
@@ -600,11 +650,14 @@ int map_found_read(const char *dir, const map_grid *grid, map_found *found, char
     }
     for (i = 0; i < count; ++i) {
         snprintf(path, sizeof path, "%s/%s", dir, names[i]->d_name);
-        read_results_file(path, grid, found);
+        if (!failed && read_results_file(path, grid, found, err, size) != 0)
+            failed = 1;
         free(names[i]);
     }
     free(names);
-    return 0;
+    if (failed)
+        map_found_free(found, grid->cases);
+    return failed ? -1 : 0;
 }
 
 void map_found_free(map_found *found, long cases)

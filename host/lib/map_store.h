@@ -39,7 +39,8 @@
 char *map_identity_text(const map_grid *grid, const scene_file *base, const char *scene_path,
                         const char *command);
 
-/* Makes dir hold the map of identity: creates dir (not its parents) and
+/* Makes dir hold the map of identity: creates dir (and the folders above it
+ * that are missing; a refusal names the one that could not be made) and
  * writes the identity if it has none, else compares. Refused, with what
  * differs: a dir of another map, a dir holding other files but no identity,
  * a path that is not a folder. 0; 1 when dir's map was started by another

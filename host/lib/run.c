@@ -61,16 +61,22 @@ static double load_energy(const bs_sim *sim)
     return (double)out.energy;
 }
 
-/* Takes step number step under the run's excitation: the measured step mean, or
- * the harmonic one, with a schedule's frequency and amplitude at the step's
- * midpoint handed to the sim when they change (*frequency, *amplitude: the
- * values it has). */
+/* Takes step number step under the run's excitation: the measured step mean
+ * (*input_failed set if it cannot be read), or the harmonic one, with a
+ * schedule's frequency and amplitude at the step's midpoint handed to the sim
+ * when they change (*frequency, *amplitude: the values it has). */
 static bs_status advance(bs_sim *sim, const run_options *options, uint64_t step, double *frequency,
-                         double *amplitude)
+                         double *amplitude, int *input_failed)
 {
     const schedule *plan = options->excitation_schedule;
-    if (options->base_accel)
-        return bs_sim_step_measured(sim, (bs_real)options->base_accel[step - 1]);
+    if (options->base_accel) {
+        double mean;
+        if (options->base_accel(options->base_accel_source, &mean) != 0) {
+            *input_failed = 1;
+            return BS_E_ARGUMENT;
+        }
+        return bs_sim_step_measured(sim, (bs_real)mean);
+    }
     if (plan && plan->points > 0) {
         double f, a;
         schedule_at(plan, ((double)step - 0.5) * options->dt, &f, &a);
@@ -87,7 +93,10 @@ static bs_status advance(bs_sim *sim, const run_options *options, uint64_t step,
 
 uint64_t run_step_count(double t_end, double dt)
 {
-    return (uint64_t)llround(t_end / dt);
+    const double steps = t_end / dt;
+    if (!(steps < 9007199254740992.0)) /* 2^53, and NaN */
+        return (uint64_t)1 << 53;
+    return steps > 0.0 ? (uint64_t)llround(steps) : 0;
 }
 
 static void fail_write(run_result *result)
@@ -120,6 +129,7 @@ int run_scene(const bs_scene *scene, const run_options *options, run_result *res
         result->status = bs_sim_set_solver(&sim, &options->solver);
     result->write_failed = 0;
     result->write_errno = 0;
+    result->input_failed = 0;
     result->steps = 0;
     result->t = 0.0;
     result->s_final = result->s_min = options->s0; /* the sim is only readable once init succeeded */
@@ -148,7 +158,7 @@ int run_scene(const bs_scene *scene, const run_options *options, run_result *res
     for (step = 1; step <= steps && !result->write_failed; ++step) {
         bs_step_report report;
         double s;
-        result->status = advance(&sim, options, step, &frequency, &amplitude);
+        result->status = advance(&sim, options, step, &frequency, &amplitude, &result->input_failed);
         if (result->status != BS_OK)
             break;
         result->steps = step;

@@ -22,15 +22,19 @@ typedef struct run_options {
     FILE *periods;       /* NULL: no per-period CSV (run_periods_header) */
     int show_progress;   /* progress bar on a terminal */
     const schedule *excitation_schedule; /* NULL or no points: the scene's constant excitation */
-    const double *base_accel;  /* NULL: the harmonic excitation (the scene's or the schedule's);
-                                  else a measured one: the mean base acceleration of each step
-                                  [m/s^2], run_step_count(t_end, dt) values (bs_sim_step_measured) */
+    /* NULL: the harmonic excitation (the scene's or the schedule's); else a
+     * measured one: base_accel(source, &mean) gives the mean base acceleration
+     * of each step in turn [m/s^2] (bs_sim_step_measured), 0 or -1 (the run
+     * then stops with input_failed set; the source says why) */
+    int (*base_accel)(void *source, double *mean);
+    void *base_accel_source;
 } run_options;
 
 typedef struct run_result {
     bs_status status;          /* BS_OK, or why the run stopped */
     int write_failed;          /* an output could not be written */
     int write_errno;           /* errno of the first failed write */
+    int input_failed;          /* the measured excitation could not be read on */
     uint64_t steps;            /* steps completed */
     double t;                  /* simulated time reached [s] */
     double s_final;
@@ -49,7 +53,9 @@ typedef struct run_result {
                                   the run completed */
 } run_result;
 
-/* The steps of a run: round(t_end / dt). */
+/* The steps of a run: round(t_end / dt), and at most 2^53 (the scene's
+ * check, host/lib/scene_build.c): a larger quotient, or one that is not a
+ * number, gives 2^53 without converting it. */
 uint64_t run_step_count(double t_end, double dt);
 
 /* Runs scene from rest for run_step_count(t_end, dt) steps. Returns 0 when

@@ -15,6 +15,7 @@
  */
 #include "scene_build.h"
 #include "scene_limits.h"
+#include "schedule.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -188,6 +189,64 @@ void scene_data_round(const scene_data *data, bs_scene *scene)
     BS_SCENE_FIELDS(ROUND_FIELD)
 }
 
+/* A cross-field check names the input set most specifically as the culprit
+ * (scene_limits_specific: the user's latest change, an option or the file
+ * itself rather than its base): "WHERE: [section] key = value unit" into
+ * culprit, its place into where. The others are named in the message with
+ * their places. */
+static int culprit_of(const scene_file *file, const scene_input *inputs, int count, char *where, size_t where_size,
+                      char *culprit, size_t culprit_size)
+{
+    const int k = scene_limits_specific(file, inputs, count);
+    int i;
+    scene_where(file, inputs[k].section, inputs[k].key, where, where_size);
+    for (i = 0; scene_fields[i].key; ++i)
+        if (!strcmp(scene_fields[i].section, inputs[k].section) && !strcmp(scene_fields[i].key, inputs[k].key))
+            break;
+    if (scene_fields[i].key && scene_fields[i].kind == FIELD_REAL)
+        snprintf(culprit, culprit_size, "[%s] %s = %g%s%s", inputs[k].section, inputs[k].key,
+                 *(const double *)((const char *)&file->params + scene_fields[i].offset),
+                 *scene_fields[i].unit ? " " : "", scene_fields[i].unit);
+    else
+        snprintf(culprit, culprit_size, "[%s] %s", inputs[k].section, inputs[k].key);
+    return k;
+}
+
+/* ", with [section] key = value unit (where)" for the input named section
+ * key unless it is the culprit k of inputs, into out. */
+static const char *other_text(const scene_file *file, const scene_input *inputs, int k, int i, char *out,
+                              size_t size)
+{
+    char where[SCENE_PATH + 16];
+    int f;
+    out[0] = '\0';
+    if (i == k)
+        return out;
+    for (f = 0; scene_fields[f].key; ++f)
+        if (!strcmp(scene_fields[f].section, inputs[i].section) && !strcmp(scene_fields[f].key, inputs[i].key))
+            break;
+    if (!scene_fields[f].key || scene_fields[f].kind != FIELD_REAL)
+        return out;
+    scene_where(file, inputs[i].section, inputs[i].key, where, sizeof where);
+    snprintf(out, size, ", with [%s] %s = %g%s%s %s%s%s", inputs[i].section, inputs[i].key,
+             *(const double *)((const char *)&file->params + scene_fields[f].offset), *scene_fields[f].unit ? " " : "",
+             scene_fields[f].unit, where[0] == '(' ? "" : "(", where, where[0] == '(' ? "" : ")");
+    return out;
+}
+
+#define INPUTS(list) list, (int)(sizeof list / sizeof list[0])
+static const scene_input slot_inputs[] = { { "slider", "slot_width" }, { "beam", "length" } };
+static const scene_input patch_inputs[] = { { "transducer", "patch_end" }, { "transducer", "patch_start" },
+                                            { "beam", "length" } };
+static const scene_input room_inputs[] = { { "transducer", "patch_end" }, { "transducer", "patch_start" },
+                                           { "slider", "slot_width" }, { "beam", "length" } };
+static const scene_input explicit_inputs[] = { { "numerics", "dt" }, { "beam", "youngs_modulus" },
+                                               { "beam", "thickness" }, { "beam", "density" }, { "beam", "length" } };
+static const scene_input coupling_inputs[] = { { "transducer", "coupling" }, { "transducer", "capacitance" },
+                                               { "numerics", "dt" } };
+static const scene_input period_inputs[] = { { "numerics", "dt" }, { "excitation", "frequency" } };
+static const scene_input steps_inputs[] = { { "run", "t_end" }, { "numerics", "dt" } };
+
 /* Cross-field checks that need derived quantities. Bounds are printed with
  * bound_text: on the allowed side, to as many digits as that takes. */
 static int check_derived(const scene_file *file, const scene_model *model, char *err, size_t size)
@@ -196,48 +255,54 @@ static int check_derived(const scene_file *file, const scene_model *model, char 
     const double omega_max = model->modes.omega[model->modes.n - 1];
     char where[SCENE_PATH + 16];
     char where2[SCENE_PATH + 16];
+    char culprit[SCENE_PATH + 96], other[SCENE_PATH + 96], other2[SCENE_PATH + 96];
     char value[40], limit[40];
+    int k;
 
     if (!(p->slot_width < p->beam.length)) {
         values_text(p->slot_width, p->beam.length, value, limit, sizeof value);
-        snprintf(err, size, "%s: [slider] slot_width = %s m must be below [beam] length = %s m (%s)",
-                 scene_where(file, "slider", "slot_width", where, sizeof where), value, limit,
-                 scene_where(file, "beam", "length", where2, sizeof where2));
+        k = culprit_of(file, INPUTS(slot_inputs), where2, sizeof where2, culprit, sizeof culprit);
+        scene_where(file, slot_inputs[1 - k].section, slot_inputs[1 - k].key, where, sizeof where);
+        if (k == 0)
+            snprintf(err, size, "%s: [slider] slot_width = %s m must be below [beam] length = %s m (%s)", where2,
+                     value, limit, where);
+        else
+            snprintf(err, size, "%s: [beam] length = %s m must be above [slider] slot_width = %s m (%s)", where2,
+                     limit, value, where);
         return -1;
     }
     if (p->load != SCENE_LOAD_NONE) {
         const double stop = p->patch_start == 0.0 ? p->patch_end + 0.5 * p->slot_width
                                                   : p->patch_start - 0.5 * p->slot_width;
         if (!(p->patch_start < p->patch_end && p->patch_end <= p->beam.length)) {
-            snprintf(err, size, "%s: [transducer] patch_start = %g m, patch_end = %g m: the patch must lie "
-                     "within the beam, 0 <= patch_start < patch_end <= length (%g m)",
-                     scene_where(file, "transducer", "patch_end", where, sizeof where), p->patch_start,
-                     p->patch_end, p->beam.length);
+            k = culprit_of(file, INPUTS(patch_inputs), where, sizeof where, culprit, sizeof culprit);
+            snprintf(err, size, "%s: %s: the patch must lie within the beam, 0 <= patch_start < patch_end <= length "
+                     "([transducer] patch_start = %g m, patch_end = %g m, [beam] length = %g m)", where, culprit,
+                     p->patch_start, p->patch_end, p->beam.length);
             return -1;
         }
         if (p->patch_start != 0.0 && p->patch_end != p->beam.length) {
-            snprintf(err, size, "%s: [transducer] the patch (%g m to %g m) must start at the left clamp "
+            k = culprit_of(file, INPUTS(patch_inputs), where, sizeof where, culprit, sizeof culprit);
+            snprintf(err, size, "%s: %s: the patch (%g m to %g m) must start at the left clamp "
                      "(patch_start = 0) or end at the right one (patch_end = length = %g m): the slider "
-                     "could not pass it",
-                     scene_where(file, "transducer", "patch_start", where, sizeof where), p->patch_start,
-                     p->patch_end, p->beam.length);
+                     "could not pass it", where, culprit, p->patch_start, p->patch_end, p->beam.length);
             return -1;
         }
         if (!(p->patch_start == 0.0 ? stop < p->beam.length - 0.5 * p->slot_width : stop > 0.5 * p->slot_width)) {
-            snprintf(err, size, "%s: [transducer] the patch (%g m to %g m) leaves the slider no room "
-                     "between it and the other clamp",
-                     scene_where(file, "transducer", "patch_end", where, sizeof where), p->patch_start,
-                     p->patch_end);
+            k = culprit_of(file, INPUTS(room_inputs), where, sizeof where, culprit, sizeof culprit);
+            snprintf(err, size, "%s: %s: the patch (%g m to %g m) leaves the slider (slot width %g m) no room "
+                     "between it and the other clamp", where, culprit, p->patch_start, p->patch_end, p->slot_width);
             return -1;
         }
     }
     if (!p->implicit && !(omega_max * p->dt < 2.0)) {
         bound_text(2.0 / omega_max, 1, limit, sizeof limit);
+        k = culprit_of(file, INPUTS(explicit_inputs), where, sizeof where, culprit, sizeof culprit);
         snprintf(err, size,
-                 "%s: [numerics] dt = %g s: omega_max dt = %.4g, above the explicit limit 2 "
-                 "(mode %d, %.5g Hz); allowed: dt < %s s, or [numerics] integrator = implicit",
-                 scene_where(file, "numerics", "dt", where, sizeof where), p->dt, omega_max * p->dt,
-                 model->modes.n, omega_max / (2.0 * 3.14159265358979323846), limit);
+                 "%s: %s: omega_max dt = %.4g, above the explicit limit 2 "
+                 "(mode %d, %.5g Hz%s); allowed: dt < %s s, or [numerics] integrator = implicit", where, culprit,
+                 omega_max * p->dt, model->modes.n, omega_max / (2.0 * 3.14159265358979323846),
+                 other_text(file, explicit_inputs, k, 0, other, sizeof other), limit);
         return -1;
     }
     if (p->load != SCENE_LOAD_NONE) {
@@ -247,40 +312,99 @@ static int check_derived(const scene_file *file, const scene_model *model, char 
          * (explicit) or to nothing (implicit), so a scene beyond it could not
          * take its first step. */
         double theta[BS_MAX_MODES], largest = 0.0, sum = 0.0, patch, stiffness;
-        int k;
+        int m;
         patch_couplings(p, &model->modes, theta);
-        for (k = 0; k < model->modes.n; ++k) {
-            sum += fabs(theta[k]);
-            largest = fmax(largest, fabs(theta[k]));
+        for (m = 0; m < model->modes.n; ++m) {
+            sum += fabs(theta[m]);
+            largest = fmax(largest, fabs(theta[m]));
         }
         patch = largest * sum / p->capacitance;
         stiffness = (p->implicit ? 0.0 : omega_max * omega_max) + patch;
         if (!(stiffness * p->dt * p->dt < 4.0)) {
+            char capacitance[40];
+            const double room = 4.0 / (p->dt * p->dt) - (p->implicit ? 0.0 : omega_max * omega_max);
             bound_text(2.0 / sqrt(stiffness), 1, limit, sizeof limit);
+            bound_text(room > 0.0 ? largest * sum / room : HUGE_VAL, -1, capacitance, sizeof capacitance);
+            k = culprit_of(file, INPUTS(coupling_inputs), where, sizeof where, culprit, sizeof culprit);
             snprintf(err, size,
-                     "%s: [transducer] coupling = %g N m/V: the open patch's stiffness theta theta^T / C_p "
-                     "(bound %.4g 1/s^2, C_p = %g F) brings the explicitly integrated stiffness to %.4g 1/s^2, "
-                     "above the limit 4 / dt^2 = %.4g 1/s^2; allowed: dt < %s s, a smaller |coupling| or a "
-                     "larger capacitance",
-                     scene_where(file, "transducer", "coupling", where, sizeof where), p->coupling, patch,
-                     p->capacitance, stiffness, 4.0 / (p->dt * p->dt), limit);
+                     "%s: %s: the open patch's stiffness theta theta^T / C_p (bound %.4g 1/s^2%s%s) brings the "
+                     "explicitly integrated stiffness to %.4g 1/s^2, above the limit 4 / dt^2 = %.4g 1/s^2; "
+                     "allowed: dt < %s s, a smaller |coupling| or a capacitance > %s F", where, culprit, patch,
+                     other_text(file, coupling_inputs, k, k == 0 ? 1 : 0, other, sizeof other),
+                     other_text(file, coupling_inputs, k, k == 2 ? 1 : 2, other2, sizeof other2), stiffness,
+                     4.0 / (p->dt * p->dt), limit, capacitance);
             return -1;
         }
     }
     if (!(p->frequency * p->dt < 0.5)) {
-        bound_text(0.5 / p->frequency, 1, limit, sizeof limit);
-        snprintf(err, size, "%s: [numerics] dt = %g s: fewer than two steps per excitation period "
-                 "(f_ex = %g Hz); allowed: dt < %s s",
-                 scene_where(file, "numerics", "dt", where, sizeof where), p->dt, p->frequency, limit);
+        k = culprit_of(file, INPUTS(period_inputs), where, sizeof where, culprit, sizeof culprit);
+        if (k == 0) {
+            bound_text(0.5 / p->frequency, 1, limit, sizeof limit);
+            snprintf(err, size, "%s: %s: fewer than two steps per excitation period (f_ex = %g Hz); allowed: dt < "
+                     "%s s", where, culprit, p->frequency, limit);
+        } else {
+            bound_text(0.5 / p->dt, 0, limit, sizeof limit); /* exclusive */
+            snprintf(err, size, "%s: %s: fewer than two steps per excitation period%s; allowed: f_ex < %s Hz (or a "
+                     "smaller dt)", where, culprit, other_text(file, period_inputs, k, 0, other, sizeof other), limit);
+        }
         return -1;
     }
     /* steps are counted exactly in a double: t = n dt */
     if (!(p->t_end / p->dt <= 9007199254740992.0)) {
         bound_text(9007199254740992.0 * p->dt, 1, limit, sizeof limit);
-        snprintf(err, size, "%s: [run] t_end = %g s is more than 2^53 steps of dt = %g s; allowed: "
-                 "t_end <= %s s (or a larger dt)",
-                 scene_where(file, "run", "t_end", where, sizeof where), p->t_end, p->dt, limit);
+        k = culprit_of(file, INPUTS(steps_inputs), where, sizeof where, culprit, sizeof culprit);
+        if (k == 0) {
+            snprintf(err, size, "%s: [run] t_end = %g s is more than 2^53 steps of dt = %g s; allowed: t_end <= %s "
+                     "s (or a larger dt)", where, p->t_end, p->dt, limit);
+        } else {
+            bound_text(p->t_end / 9007199254740992.0, -1, limit, sizeof limit);
+            snprintf(err, size, "%s: [numerics] dt = %g s: [run] t_end = %g s (%s) is more than 2^53 steps of it; "
+                     "allowed: dt >= %s s (or a shorter t_end)", where, p->dt, p->t_end,
+                     scene_where(file, "run", "t_end", where2, sizeof where2), limit);
+        }
         return -1;
+    }
+    return 0;
+}
+
+/* The points of [excitation] schedule, each checked as the scene's own
+ * frequency and acceleration are (they reach the core the same way, through
+ * bs_sim_set_excitation, only later): a frequency within the core's range,
+ * with a phase step f dt 2^63 that does not round to 0 and at least two
+ * steps per period (f dt < 1/2); an amplitude within the range of
+ * [excitation] acceleration. Else the run would start, write its output and
+ * stop at the point with "argument out of range". */
+static int check_schedule(const scene_file *file, char *err, size_t size)
+{
+    const scene_params *p = &file->params;
+    schedule plan;
+    double f_low, f_high, a_low, a_high;
+    char where[SCENE_PATH + 16], low[40], high[40], why[160];
+    int k;
+
+    if (schedule_parse(p->schedule, &plan, why, sizeof why) != 0 || plan.points == 0)
+        return 0; /* its syntax was checked when it was read */
+    if (scene_limits_range(file, "excitation", "frequency", &f_low, &f_high) != 0)
+        f_low = HUGE_VAL; /* nothing works: every point is refused */
+    if (scene_limits_range(file, "excitation", "acceleration", &a_low, &a_high) != 0)
+        a_high = -1.0;
+    scene_where(file, "excitation", "schedule", where, sizeof where);
+    for (k = 0; k < plan.points; ++k) {
+        const double f = plan.frequency[k], a = plan.amplitude[k];
+        if (!(f >= f_low && f <= f_high && f * p->dt < 0.5)) {
+            bound_text(f_low, -1, low, sizeof low);
+            bound_text(fmin(f_high, 0.5 / p->dt), 0, high, sizeof high); /* exclusive: %.6g */
+            snprintf(err, size, "%s: [excitation] schedule point %d: frequency %g Hz is out of range at dt = %g s; "
+                     "allowed: %s <= f < %s Hz (at least two steps per period, and a phase step f dt 2^63 that "
+                     "does not round to 0)", where, k + 1, f, p->dt, low, high);
+            return -1;
+        }
+        if (!(a >= a_low && a <= a_high)) {
+            bound_text(a_high, 1, high, sizeof high);
+            snprintf(err, size, "%s: [excitation] schedule point %d: amplitude %g m/s^2 is out of range; allowed: "
+                     "0 .. %s m/s^2 (the range of [excitation] acceleration)", where, k + 1, a, high);
+            return -1;
+        }
     }
     return 0;
 }
@@ -427,6 +551,9 @@ static int check_modal_results(const scene_file *file, const modal_set *modes, c
     return -1;
 }
 
+static const scene_input slot_play_inputs[] = { { "slider", "com_offset" }, { "slider", "play_ratio" },
+                                                { "beam", "thickness" } };
+
 /* The slot holds the beam as bs_scene_check sees it: the corner heights
  * R/2 + d and -R/2 + d, rounded to bs_real, still at least h apart. A large
  * offset d next to a small play rounds the play away. */
@@ -448,13 +575,37 @@ static int check_slot_rounding(const scene_file *file, const bs_scene *scene, ch
      * eps h. Enough room: R (1 - eps) - 2 eps (|d| + R/2) >= h (1 + eps) (1 - 16 eps). */
     largest = (slot * (1.0 - eps) - p->beam.thickness * (1.0 + eps) * (1.0 - 16.0 * eps)) / (2.0 * eps)
               - 0.5 * slot;
-    range_ends_text(-largest, largest, low, high, sizeof low);
-    snprintf(err, size, "%s: [slider] com_offset = %g m is too large for the slot height R = play_ratio "
-             "thickness = %g m (%s, %s): rounded to %s, the corners lose the play; allowed: [%s, %s] m, "
-             "or a larger play_ratio", scene_where(file, "slider", "com_offset", where[0], sizeof where[0]),
-             p->com_offset, slot, scene_where(file, "slider", "play_ratio", where[1], sizeof where[1]),
-             scene_where(file, "beam", "thickness", where[2], sizeof where[2]), BS_REAL_NAME, low, high);
-    return -1;
+    switch (scene_limits_specific(file, slot_play_inputs, 3)) {
+    case 0:
+        range_ends_text(-largest, largest, low, high, sizeof low);
+        snprintf(err, size, "%s: [slider] com_offset = %g m is too large for the slot height R = play_ratio "
+                 "thickness = %g m (%s, %s): rounded to %s, the corners lose the play; allowed: [%s, %s] m, "
+                 "or a larger play_ratio", scene_where(file, "slider", "com_offset", where[0], sizeof where[0]),
+                 p->com_offset, slot, scene_where(file, "slider", "play_ratio", where[1], sizeof where[1]),
+                 scene_where(file, "beam", "thickness", where[2], sizeof where[2]), BS_REAL_NAME, low, high);
+        return -1;
+    case 1: /* r h (1 - 2 eps) >= 2 eps |d| + h (1 + eps) (1 - 16 eps) */
+        bound_text((2.0 * eps * fabs(p->com_offset) + p->beam.thickness * (1.0 + eps) * (1.0 - 16.0 * eps))
+                   / (p->beam.thickness * (1.0 - 2.0 * eps)), -1, low, sizeof low);
+        snprintf(err, size, "%s: [slider] play_ratio = %g is too small for the slot's offset [slider] com_offset = "
+                 "%g m (%s) on a beam of thickness %g m: rounded to %s, the corners lose the play; allowed: "
+                 "play_ratio >= %s, or a smaller |com_offset|",
+                 scene_where(file, "slider", "play_ratio", where[0], sizeof where[0]), p->play_ratio, p->com_offset,
+                 scene_where(file, "slider", "com_offset", where[1], sizeof where[1]), p->beam.thickness,
+                 BS_REAL_NAME, low);
+        return -1;
+    default: { /* h (r (1 - 2 eps) - (1 + eps) (1 - 16 eps)) >= 2 eps |d| */
+        const double room = p->play_ratio * (1.0 - 2.0 * eps) - (1.0 + eps) * (1.0 - 16.0 * eps);
+        bound_text(room > 0.0 ? 2.0 * eps * fabs(p->com_offset) / room : HUGE_VAL, -1, low, sizeof low);
+        snprintf(err, size, "%s: [beam] thickness = %g m makes the slot height R = play_ratio thickness = %g m too "
+                 "small for the slot's offset [slider] com_offset = %g m (%s): rounded to %s, the corners lose the "
+                 "play; allowed: thickness >= %s m, or a smaller |com_offset|",
+                 scene_where(file, "beam", "thickness", where[0], sizeof where[0]), p->beam.thickness, slot,
+                 p->com_offset, scene_where(file, "slider", "com_offset", where[1], sizeof where[1]), BS_REAL_NAME,
+                 low);
+        return -1;
+    }
+    }
 }
 
 /* The clamp stops B/2 < L - B/2 once rounded to bs_real: a slot a hair
@@ -514,7 +665,8 @@ int scene_build(const scene_file *file, bs_scene *scene, scene_model *model, cha
                  file->files[0]);
         return -1;
     }
-    if (check_modal_results(file, &model->modes, err, size) != 0 || check_derived(file, model, err, size) != 0)
+    if (check_modal_results(file, &model->modes, err, size) != 0 || check_derived(file, model, err, size) != 0
+        || check_schedule(file, err, size) != 0)
         return -1;
     if (shape_fit_modes(&model->modes, scene_fit_tolerance(), &model->fit) != 0) {
         snprintf(err, size, "%s: %d modes need more than %d shape pieces for a fit error of %g "

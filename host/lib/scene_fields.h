@@ -77,7 +77,8 @@ enum { SCENE_LOAD_NONE = BS_LOAD_NONE, SCENE_LOAD_RESISTOR = BS_LOAD_RESISTOR, S
       "base acceleration amplitude a", 0)                                                                   \
     X(TEXT, "excitation", "schedule", schedule, OWN, 0, 0, 0, 0, "", "s Hz m/s^2",                              \
       "a varying excitation: t:f:a[, t:f:a ...], frequency and amplitude linear in time between the points "   \
-      "(held before the first and after the last; the phase stays continuous); empty: constant", 0)          \
+      "(held before the first and after the last; the phase stays continuous); empty: constant. Each point "   \
+      "within the ranges of frequency (f dt < 1/2) and acceleration", 0)                                     \
     X(INT, "numerics", "modes", modes, OWN, 1, BS_MAX_MODES, 0, 0, 0, "", "number of beam modes N", 0)         \
     X(CHOICE, "numerics", "stretching", stretching, OWN, 0, 0, 0, 0, "on", "",                                 \
       "on | off: the cubic bending-stretching term", scene_switches)                                         \

@@ -18,21 +18,18 @@
  * and so come before errors of values, even at a later line. The first error
  * wins and names file, line, field, value and the allowed range.
  */
-#define _POSIX_C_SOURCE 200809L /* open, fstat, fcntl, fdopen */
 
 #include "scene_ini.h"
 
 #include <ctype.h>
 #include <errno.h>
-#include <fcntl.h>
 #include <ini.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
+#include "input_file.h"
 #include "schedule.h"
 
 typedef struct reader {
@@ -416,50 +413,12 @@ static int on_entry(void *user, const char *section, const char *key, const char
     return 1;
 }
 
-static const char *file_kind(mode_t mode)
-{
-    if (S_ISDIR(mode))
-        return "a folder";
-    if (S_ISFIFO(mode))
-        return "a FIFO (named pipe)";
-    if (S_ISCHR(mode))
-        return "a character device";
-    if (S_ISBLK(mode))
-        return "a block device";
-    if (S_ISSOCK(mode))
-        return "a socket";
-    return "not a regular file";
-}
-
 /* Opens a scene or base file for reading: a regular file of at most
- * SCENE_MAX_BYTES. Opened without blocking, so that a FIFO without a writer
- * is refused instead of waited for. 0, or -1 with what failed ("open",
- * "read") in verb and why in why. */
+ * SCENE_MAX_BYTES (the helper every reader uses, input_file.h). 0, or -1
+ * with what failed ("open", "read") in verb and why in why. */
 static int open_scene_file(const char *path, FILE **file, const char **verb, char *why, size_t size)
 {
-    struct stat info;
-    const int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY);
-
-    *file = NULL;
-    *verb = "open";
-    if (fd < 0) {
-        snprintf(why, size, "%s", strerror(errno));
-        return -1;
-    }
-    *verb = "read";
-    if (fstat(fd, &info) != 0)
-        snprintf(why, size, "%s", strerror(errno));
-    else if (!S_ISREG(info.st_mode))
-        snprintf(why, size, "%s, not a regular file", file_kind(info.st_mode));
-    else if (info.st_size > SCENE_MAX_BYTES)
-        snprintf(why, size, "%lld bytes, more than a scene file may have (%ld, 1 MiB)",
-                 (long long)info.st_size, SCENE_MAX_BYTES);
-    else if (fcntl(fd, F_SETFL, 0) != 0 || !(*file = fdopen(fd, "r")))
-        snprintf(why, size, "%s", strerror(errno));
-    else
-        return 0;
-    close(fd);
-    return -1;
+    return input_file_open_why(path, INPUT_SCENE, file, NULL, verb, why, size);
 }
 
 /* One pass of libinih over the file; 0 or -1 with err filled. */
@@ -558,8 +517,22 @@ static int load_file(scene_file *scene, const char *path, char *err, size_t err_
     return run_parser(&p);
 }
 
+/* 1 if text holds a control character (a tab aside): refused in a value,
+ * as the reader refuses it in a file's line, since values reach one-line
+ * texts (a map's identity, a stream's header). */
+static int has_control(const char *text, size_t *at)
+{
+    const unsigned char *c = (const unsigned char *)text;
+    for (*at = 0; c[*at]; ++*at)
+        if ((c[*at] < 0x20 && c[*at] != '\t') || c[*at] == 0x7f)
+            return 1;
+    return 0;
+}
+
 /* The file name without its folder and .ini, unless it cannot serve as the
- * name (too long, not UTF-8): then 0, and a [scene] name must be given. */
+ * name (too long, not UTF-8): then 0, and a [scene] name must be given. A
+ * file name may hold control characters: whatever writes the name escapes
+ * it (the JSON summary; tests/test_summary.c). */
 static int default_name(scene_file *scene, const char *path)
 {
     const char *slash = strrchr(path, '/');
@@ -612,9 +585,24 @@ int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
     return 0;
 }
 
+/* An option's text with a control character is refused as a file's line
+ * would be; 0 or -1 with "OPTION TEXT...: control character 0x0a ...". */
+static int check_option_text(const char *option, const char *text, char *err, size_t err_size)
+{
+    size_t at;
+    if (!has_control(text, &at))
+        return 0;
+    snprintf(err, err_size, "%s %.*s...: control character 0x%02x after %lu characters: not allowed in a value "
+             "(as in a scene file, where it is not text)", option, (int)at, text, (unsigned)(unsigned char)text[at],
+             (unsigned long)at);
+    return -1;
+}
+
 int scene_set(scene_file *scene, const char *section, const char *key, const char *value,
               const char *origin, char *err, size_t err_size)
 {
+    if (check_option_text(origin, value, err, err_size) != 0)
+        return -1;
     if (strlen(origin) >= SCENE_OPTION) {
         snprintf(err, err_size, "%.*s...: option name too long (at most %d characters)", SCENE_OPTION,
                  origin, SCENE_OPTION - 1);
@@ -653,6 +641,8 @@ int scene_set_assignment(scene_file *scene, const char *option, const char *assi
     const char *equals = strchr(assignment, '=');
     const char *dot = strchr(assignment, '.');
 
+    if (check_option_text(option, assignment, err, err_size) != 0)
+        return -1;
     if (!equals || !dot || dot > equals || dot == assignment || dot + 1 == equals) {
         snprintf(err, err_size, "%s %s: expected section.key=value, such as %s excitation.frequency=110 "
                  "(beamslider fields lists every field)", option, assignment, option);

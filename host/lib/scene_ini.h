@@ -13,7 +13,7 @@
 enum { SCENE_MAX_FIELDS = 0 SCENE_FIELDS(SCENE_COUNT_FIELD) };
 /* A scene file (and each base) is a regular file of at most this many bytes
  * (1 MiB; the shipped ones are under 2 KiB): a FIFO, a device or a huge file
- * would otherwise be read for ever. */
+ * would otherwise be read for ever. The bound of INPUT_SCENE (input_file.h). */
 #define SCENE_MAX_BYTES (1L << 20)
 
 #define SCENE_OPTION 192 /* "--set section.key=value" with a value of most texts */

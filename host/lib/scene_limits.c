@@ -36,7 +36,9 @@ typedef struct factor {
 /* Where the quantity is held, which sets its limits. */
 typedef enum holder { IN_DOUBLE, IN_CORE, PHASE_STEP, MODE_GAIN } holder;
 typedef enum bound { BELOW = 1, ABOVE = 2, BOTH = 3 } bound; /* which limits apply */
-typedef enum condition { ALWAYS, IF_ROTATION, IF_IMPLICIT, IF_AXIAL_STRETCH, IF_BEAM_STRETCH } condition;
+typedef enum condition {
+    ALWAYS, IF_ROTATION, IF_IMPLICIT, IF_AXIAL_STRETCH, IF_BEAM_STRETCH, IF_TRANSDUCER, IF_RESISTOR, IF_RECTIFIER
+} condition;
 typedef enum constant {
     K_ONE, K_HALF, K_TWO, K_FOUR, K_TWELFTH, K_TWELVE, K_OMEGA_SQ, K_DAMPING, K_SLOPE, K_STRETCH,
     K_PIECES, K_GAIN
@@ -106,6 +108,15 @@ static const derived quantities[] = {
       IF_IMPLICIT, K_GAIN, { { "numerics", "dt", 2 }, YOUNG(1), THICKNESS(2), DENSITY(-1), LENGTH(-4) } },
     { "the relative tolerance of the contact solve", IN_CORE, ABOVE, ALWAYS, K_ONE,
       { { "solver", "tol_rel", 1 } } },
+    /* the transducer's (scene_build.c, compute_transducer) */
+    { "1 / C_p, the patch's inverse capacitance", IN_CORE, BOTH, IF_TRANSDUCER, K_ONE,
+      { { "transducer", "capacitance", -1 } } },
+    { "the load's conductance 1 / R", IN_CORE, BOTH, IF_RESISTOR, K_ONE, { { "transducer", "resistance", -1 } } },
+    { "the storage's conductance 1 / R_s", IN_CORE, BOTH, IF_RECTIFIER, K_ONE,
+      { { "transducer", "storage_resistance", -1 } } },
+    { "1 / C_s, the storage's inverse capacitance", IN_CORE, BOTH, IF_RECTIFIER, K_ONE,
+      { { "transducer", "storage_capacitance", -1 } } },
+    { "the bridge's drop 2 V_d", IN_CORE, ABOVE, IF_RECTIFIER, K_TWO, { { "transducer", "diode_drop", 1 } } },
     { "the absolute tolerance of the contact solve", IN_CORE, ABOVE, ALWAYS, K_ONE,
       { { "solver", "tol_abs", 1 } } },
 };
@@ -185,6 +196,9 @@ static int applies(const derived *d, const scene_params *p)
     case IF_IMPLICIT: return p->implicit;
     case IF_AXIAL_STRETCH: return p->stretching && log(p->beam.k_axial) <= log_beam_axial;
     case IF_BEAM_STRETCH: return p->stretching && log(p->beam.k_axial) > log_beam_axial;
+    case IF_TRANSDUCER: return p->load != SCENE_LOAD_NONE;
+    case IF_RESISTOR: return p->load == SCENE_LOAD_RESISTOR;
+    case IF_RECTIFIER: return p->load == SCENE_LOAD_RECTIFIER;
     }
     return 0;
 }
@@ -334,6 +348,28 @@ void scene_limits_describe(const scene_file *file, const scene_input *inputs, in
     }
 }
 
+/* How specifically a field was set: an option 0, the file asked for 1, its
+ * bases 2, 3, ..., the default last. */
+static int specificity(const scene_file *file, const scene_input *input)
+{
+    int i;
+    for (i = 0; scene_fields[i].key; ++i)
+        if (!strcmp(scene_fields[i].section, input->section) && !strcmp(scene_fields[i].key, input->key))
+            break;
+    if (!scene_fields[i].key || file->set_file[i] == SCENE_NOT_SET)
+        return SCENE_MAX_FILES + 2;
+    return file->set_file[i] == SCENE_BY_OPTION ? 0 : 1 + file->set_file[i];
+}
+
+int scene_limits_specific(const scene_file *file, const scene_input *inputs, int count)
+{
+    int i, best = 0;
+    for (i = 1; i < count; ++i)
+        if (specificity(file, &inputs[i]) < specificity(file, &inputs[best]))
+            best = i;
+    return best;
+}
+
 const char *scene_limits_blame(const scene_file *file, const scene_input *inputs, int count, char *out,
                                size_t size)
 {
@@ -345,7 +381,8 @@ const char *scene_limits_blame(const scene_file *file, const scene_input *inputs
             || value < low || value > high)
             return scene_where(file, inputs[i].section, inputs[i].key, out, size);
     }
-    return scene_where(file, inputs[0].section, inputs[0].key, out, size);
+    i = scene_limits_specific(file, inputs, count);
+    return scene_where(file, inputs[i].section, inputs[i].key, out, size);
 }
 
 /* The factors of d as scene_inputs, the one that weighs most (|p log10 f|)

@@ -34,8 +34,13 @@ int scene_limits_range(const scene_file *file, const char *section, const char *
 void scene_limits_describe(const scene_file *file, const scene_input *inputs, int count, char *out,
                            size_t size);
 
-/* Where the input that lies outside its allowed range was set (the first of
- * inputs if none does), into out. */
+/* Of inputs, the one set most specifically (by an option, then in the file
+ * asked for, then in its bases in order; the first of equals): the likely
+ * culprit when a combination fails a check no single range tells apart. */
+int scene_limits_specific(const scene_file *file, const scene_input *inputs, int count);
+
+/* Where the input that lies outside its allowed range was set (when none
+ * does, the most specific one: scene_limits_specific), into out. */
 const char *scene_limits_blame(const scene_file *file, const scene_input *inputs, int count, char *out,
                                size_t size);
 

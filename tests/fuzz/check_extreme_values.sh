@@ -7,9 +7,12 @@
 #
 # Each run must end with exit 0 (accepted), 1 (accepted, the run stopped:
 # divergence is the model's answer) or 2 (refused), and a refusal must name
-# the file and line of a field and must not quote a NaN or fall through to
-# the core's own check. VERBOSE=1 prints every message. Run from the
-# repository root.
+# the field under test at its file and line (line 4: not another field, as
+# "[transducer] capacitance = 4.9e-324" once blamed coupling), must not quote
+# a NaN, fall through to the core's own check or print a number of 300
+# digits. The transducer's fields are swept with a resistor load (the
+# storage ones with the rectifier). VERBOSE=1 prints every message. Run from
+# the repository root.
 bin=$1
 passed=0
 failed=0
@@ -27,7 +30,9 @@ if command -v timeout >/dev/null 2>&1; then limit="timeout 60"; fi
 fields="beam:length beam:thickness beam:density beam:youngs_modulus beam:mass beam:damping_ratio
 clamps:rotational_stiffness clamps:axial_stiffness slider:mass slider:inertia slider:slot_width
 slider:com_offset slider:play_ratio contact:friction environment:gravity excitation:frequency
-excitation:acceleration numerics:dt solver:tol_rel solver:tol_abs"
+excitation:acceleration numerics:dt solver:tol_rel solver:tol_abs run:t_end transducer:patch_end
+transducer:coupling transducer:capacitance transducer:resistance transducer:storage_capacitance
+transducer:storage_resistance transducer:diode_drop"
 values="4.9e-324 1e-320 1e-310 1e-300 1e-200 1e-100 1e-40 1e-30 1e30 1e40 1e100 1e200 1e300 1.7e308"
 
 for field in $fields; do
@@ -36,10 +41,16 @@ for field in $fields; do
     for value in $values; do
         # the field under test on line 4; the run lines without it
         {
-            printf '[scene]\nbase = mssp2023.ini\n[%s]\n%s = %s\n[excitation]\n' "$section" "$key" "$value"
+            printf '[scene]\nbase = mssp2023.ini\n[%s]\n%s = %s\n' "$section" "$key" "$value"
+            case $key in
+            storage_* | diode_drop) printf 'load = rectifier\n' ;;
+            *) [ "$section" = transducer ] && printf 'load = resistor\n' ;;
+            esac
+            printf '[excitation]\n'
             [ "$key" = frequency ] || printf 'frequency = 124\n'
             [ "$key" = acceleration ] || printf 'acceleration = 14\n'
-            printf '[run]\ns0 = 0.3\nt_end = 1e-4\n'
+            printf '[run]\ns0 = 0.3\n'
+            [ "$key" = t_end ] || printf 't_end = 1e-4\n'
         } >"$tmp/s.ini"
         $limit "$bin" run "$tmp/s.ini" >/dev/null 2>"$tmp/err"
         status=$?
@@ -51,7 +62,10 @@ for field in $fields; do
         2)
             case $message in
             *nan* | *"core refuses"*) bad="a NaN or the core's own refusal" ;;
-            *"$tmp/"*.ini:[0-9]*) ;;
+            *[0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9]*)
+                bad="a number of more than 20 digits" ;;
+            *"$tmp/s.ini:4"*"[$section] $key"* | *"[$section] $key"*"$tmp/s.ini:4"*) ;;
+            *"$tmp/"*.ini:[0-9]*) bad="another field blamed (not [$section] $key at s.ini:4)" ;;
             *) bad="no file:line" ;;
             esac
             ;;
