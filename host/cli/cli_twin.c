@@ -23,7 +23,10 @@
 #include "out_c.h"
 #include "out_json.h"
 #include "out_text.h"
+#include "progress.h"
+#include "run.h"
 #include "scene_build.h"
+#include "schedule.h"
 
 #define MAX_SETS 16
 
@@ -31,11 +34,15 @@ static const char twin_usage[] =
     "usage: beamslider twin SCENE.ini --measured FILE.csv|- --out EST.csv [--signal deflection|voltage]\n"
     "                       [--latency S] [--noise SIGMA] [--accel-noise SIGMA] [--force-noise N]\n"
     "                       [--s0 S] [--every N] [--open-loop] [--no-position] [--lockin TAU]\n"
-    "                       [--position-gain G] [--position-rate R] [--deadband D] [--score-after T] [--tolerance D]\n"
+    "                       [--position-gain G] [--position-rate R] [--deadband D] [--outlier-gate K]\n"
+    "                       [--score-after T] [--tolerance D]\n"
     "                       [--map-frequencies F,F,...] [--set SECTION.KEY=VALUE]...\n"
     "  runs the scene as a twin on the measured base acceleration, corrected from the measured\n"
     "  signal (docs/twin.md, \"Observer\"); EST.csv every N steps: t, s_hat, s_sigma, amplitude,\n"
-    "  power, y, y_hat, s_true (if the file has it), phase_error, s_error. JSON summary on stdout.\n"
+    "  power, y, y_hat, s_true (if the file has it), phase_error, s_error, outliers (measurements\n"
+    "  skipped so far: beyond --outlier-gate K times the innovation's RMS, default 6, or a\n"
+    "  correction that would throw the slider off), health (1: one within the last lock-in\n"
+    "  time). JSON summary on stdout.\n"
     "  --measured -: a live stream on standard input, read once to its end (give --noise).\n"
     "usage: beamslider twin-plant SCENE.ini --out FILE.csv [--signal deflection|voltage] [--snr DB]\n"
     "                       [--accel-snr DB] [--bits B] [--seed N] [--latency S] [--freq-scale X]\n"
@@ -66,7 +73,7 @@ typedef struct twin_cli {
     double freq_scale;
     long every;
     int open_loop, no_position;
-    double lockin, position_gain, position_rate, position_deadband;
+    double lockin, position_gain, position_rate, position_deadband, outlier_gate;
     double score_after, tolerance;
 } twin_cli;
 
@@ -112,6 +119,7 @@ static void cli_defaults(twin_cli *c)
     c->position_gain = BS_OBSERVER_DEFAULT_POSITION_GAIN;
     c->position_rate = BS_OBSERVER_DEFAULT_POSITION_RATE;
     c->position_deadband = BS_OBSERVER_DEFAULT_POSITION_DEADBAND;
+    c->outlier_gate = BS_OBSERVER_DEFAULT_OUTLIER_GATE;
     c->score_after = 5.0;
     c->tolerance = 0.005;
     c->name = "bs_observer_gains_scene";
@@ -179,6 +187,7 @@ static int parse_valued(twin_cli *c, const char *option, const char *value)
     else if (!strcmp(option, "--position-gain")) return parse_number(option, value, 0.0, 1e3, &c->position_gain);
     else if (!strcmp(option, "--position-rate")) return parse_number(option, value, 0.0, 1e3, &c->position_rate);
     else if (!strcmp(option, "--deadband")) return parse_number(option, value, 0.0, 1.0, &c->position_deadband);
+    else if (!strcmp(option, "--outlier-gate")) return parse_number(option, value, 1.5, 1e6, &c->outlier_gate);
     else if (!strcmp(option, "--score-after")) return parse_number(option, value, 0.0, HUGE_VAL, &c->score_after);
     else if (!strcmp(option, "--tolerance")) return parse_number(option, value, 0.0, 1.0, &c->tolerance);
     else if (!strcmp(option, "--bits") || !strcmp(option, "--every") || !strcmp(option, "--seed")) {
@@ -336,8 +345,15 @@ static int plant_pass(const bs_scene *scene, const scene_file *file, const twin_
     const long d = latency_steps(c, file->params.dt);
     uint64_t k, rng = 0x9e3779b97f4a7c15u ^ (uint64_t)c->seed * 0xbf58476d1ce4e5b9u;
     bs_status status = bs_sim_init(&sim, scene, BS_MODEL_FREE, (bs_real)file->params.s0);
+    schedule plan; /* the scene's [excitation] schedule, stepped as `run` steps it */
+    double frequency = -1.0, amplitude = -1.0;
+    char why[256];
     int i;
 
+    if (schedule_parse(file->params.schedule, &plan, why, sizeof why) != 0) { /* checked when read */
+        cli_error("plant: [excitation] schedule: %s", why);
+        return -1;
+    }
     if (status != BS_OK) {
         cli_error("plant: %s", bs_status_text(status));
         return -1;
@@ -350,7 +366,7 @@ static int plant_pass(const bs_scene *scene, const scene_file *file, const twin_
         memset(stats, 0, sizeof *stats);
     for (k = 1; k <= steps; ++k) {
         double a, y;
-        status = bs_sim_step(&sim);
+        status = run_step_harmonic(&sim, &plan, file->params.dt, k, &frequency, &amplitude);
         if (status != BS_OK) {
             cli_error("plant: stopped at step %llu: %s", (unsigned long long)k, bs_status_text(status));
             return -1;
@@ -405,7 +421,7 @@ static int cli_twin_plant(int argc, char **argv)
         cli_error("twin-plant needs --out FILE.csv");
         return CLI_USAGE;
     }
-    steps = (uint64_t)llround(file.params.t_end / file.params.dt);
+    steps = run_step_count(file.params.t_end, file.params.dt); /* the scene's check bounds it */
     if (plant_pass(&scene, &file, &c, steps, &stats, NULL, 0.0, 0.0) != 0)
         return CLI_FAILED;
     a_snr = isnan(c.accel_snr) ? c.snr : c.accel_snr;
@@ -494,12 +510,20 @@ static int open_measured(measured_file *m, const char *path, double dt)
 
 /* ---- twin-gains and twin ---- */
 
+/* The design's progress bar (on a terminal only, like run's). */
+static void design_progress(void *context, double fraction)
+{
+    progress_update((progress *)context, fraction, NULL);
+}
+
 static int design(const twin_cli *c, const scene_file *file, const scene_model *model, const bs_scene *scene,
                   int signal, double noise,
                   double accel_noise, bs_observer_gains *gains)
 {
     observer_design_options o = observer_design_defaults(noise);
+    progress bar;
     char err[1024];
+    int failed;
     o.signal = signal;
     o.force_noise = c->force_noise;
     o.accel_noise = isnan(accel_noise) ? 0.0 : accel_noise;
@@ -511,7 +535,12 @@ static int design(const twin_cli *c, const scene_file *file, const scene_model *
                   BS_OBSERVER_MAX_LATENCY * file->params.dt);
         return -1;
     }
-    if (observer_design(file, model, scene, &o, gains, err, sizeof err) != 0) {
+    progress_start(&bar, "observer design (response maps)");
+    o.progress = design_progress;
+    o.progress_context = &bar;
+    failed = observer_design(file, model, scene, &o, gains, err, sizeof err) != 0;
+    progress_end(&bar);
+    if (failed) {
         cli_error("%s", err);
         return -1;
     }
@@ -551,9 +580,10 @@ typedef struct twin_tally {
 
 static int write_estimate(FILE *out, double t, const bs_observer_estimate *e, double s_true)
 {
-    return fprintf(out, "%.9g,%.9g,%.4g,%.6g,%.6g,%.6g,%.6g,%.9g,%.5g,%.5g\n", t, (double)e->s, (double)e->s_sigma,
-                   (double)e->amplitude, (double)e->power, (double)e->measurement, (double)e->prediction, s_true,
-                   (double)e->phase_error, (double)e->s_error) < 0;
+    return fprintf(out, "%.9g,%.9g,%.4g,%.6g,%.6g,%.6g,%.6g,%.9g,%.5g,%.5g,%lu,%d\n", t, (double)e->s,
+                   (double)e->s_sigma, (double)e->amplitude, (double)e->power, (double)e->measurement,
+                   (double)e->prediction, s_true, (double)e->phase_error, (double)e->s_error,
+                   (unsigned long)e->outliers, e->health) < 0;
 }
 
 static int run_twin(const twin_cli *c, const bs_scene *scene, const scene_file *file, const bs_observer_gains *gains,
@@ -579,6 +609,7 @@ static int run_twin(const twin_cli *c, const bs_scene *scene, const scene_file *
     options.position_gain = (bs_real)c->position_gain;
     options.position_rate = (bs_real)c->position_rate;
     options.position_deadband = (bs_real)c->position_deadband;
+    options.outlier_gate = (bs_real)c->outlier_gate;
     if (status == BS_OK)
         status = bs_observer_init(&obs, &sim, gains, &options);
     if (status != BS_OK) {
@@ -587,7 +618,7 @@ static int run_twin(const twin_cli *c, const bs_scene *scene, const scene_file *
     }
     memset(tally, 0, sizeof *tally);
     tally->s_true = NAN;
-    if (fprintf(out, "t,s_hat,s_sigma,amplitude,power,y,y_hat,s_true,phase_error,s_error\n") < 0)
+    if (fprintf(out, "t,s_hat,s_sigma,amplitude,power,y,y_hat,s_true,phase_error,s_error,outliers,health\n") < 0)
         return -1;
     while ((row = measured_next(&m->reader, &sample, err, sizeof err)) > 0) {
         t = sample.t;
@@ -636,6 +667,9 @@ static int print_summary(const twin_cli *c, const scene_file *file, const bs_obs
     out_json_int(&j, "beam_correction", !c->open_loop);
     out_json_int(&j, "position_correction", !c->open_loop && !c->no_position);
     out_json_number(&j, "rms_innovation", "%.6g", tally->rows ? sqrt(tally->innovation_sq / (double)tally->rows) : 0.0);
+    out_json_number(&j, "outlier_gate", "%g", c->outlier_gate);
+    out_json_count(&j, "outliers", (unsigned long long)tally->last.outliers);
+    out_json_int(&j, "health", tally->last.health);
     out_json_number(&j, "s_final", "%.6f", (double)tally->last.s);
     out_json_number(&j, "s_sigma_final", "%.4g", (double)tally->last.s_sigma);
     out_json_number(&j, "s_true_final", "%.6f", tally->s_true);

@@ -83,6 +83,8 @@ observer_design_options observer_design_defaults(double noise)
     o.latency = 0;
     o.map_hold = OBSERVER_DEFAULT_MAP_HOLD;
     o.map_record = OBSERVER_DEFAULT_MAP_RECORD;
+    o.progress = NULL;
+    o.progress_context = NULL;
     return o;
 }
 
@@ -469,8 +471,24 @@ static int response_map(const scene_file *file, const bs_scene *scene, const obs
     const int count = BS_OBSERVER_TABLE;
     int i, m, branch;
 
+    double steps = 0.0, done = 0.0;
     if (map_excitations(file, scene, o, gains, err, err_size) != 0)
         return -1;
+    for (m = 0; m < gains->map_count; ++m) /* the cost, before any of it is spent */
+        steps += 2.0 * count * (o->map_hold + o->map_record) / ((double)gains->map_frequency[m] * (double)scene->dt);
+    if (!(steps <= OBSERVER_DESIGN_MAX_STEPS)) {
+        int used = snprintf(err, err_size, "observer design: response maps at");
+        for (m = 0; m < gains->map_count && used > 0 && (size_t)used < err_size; ++m)
+            used += snprintf(err + used, err_size - (size_t)used, "%s %g", m ? "," : "",
+                             (double)gains->map_frequency[m]);
+        if (used > 0 && (size_t)used < err_size)
+            snprintf(err + used, err_size - (size_t)used,
+                     " Hz need about %.3g steps of simulation, more than the design's bound of %.3g (a map "
+                     "costs 2 x %d x %d excitation periods of 1 / (f dt) steps each): make them at higher "
+                     "frequencies, near the excitation's", steps, OBSERVER_DESIGN_MAX_STEPS, count,
+                     o->map_hold + o->map_record);
+        return -1;
+    }
     gains->table_count = count;
     for (i = 0; i < count; ++i)
         gains->table_s[i] = (bs_real)(s_low + (0.5 - s_low) * i / (count - 1));
@@ -486,6 +504,9 @@ static int response_map(const scene_file *file, const bs_scene *scene, const obs
                 double h = 0.0;
                 status = map_point(&sim, (double)gains->table_s[j], o, !branch, &h);
                 (branch ? gains->table_soft : gains->table_stiff)[m][j] = (bs_real)h;
+                done += (o->map_hold + o->map_record) / ((double)gains->map_frequency[m] * (double)scene->dt);
+                if (o->progress)
+                    o->progress(o->progress_context, done / steps);
             }
             if (status != BS_OK) {
                 snprintf(err, err_size, "observer design: the response map's PCS sweep at %g Hz stopped: %s",

@@ -25,7 +25,17 @@ typedef struct observer_design_options {
     int map_count;        /* response maps at map_frequency[], 1 .. BS_OBSERVER_MAPS; 0: from the
                              scene (observer_design) */
     double map_frequency[BS_OBSERVER_MAPS]; /* [Hz], > 0, ascending */
+    void (*progress)(void *context, double fraction); /* NULL, or told the part done, [0, 1], as
+                                                         the response maps are made */
+    void *progress_context;
 } observer_design_options;
+
+/* The response maps may take at most this many steps of simulation in all
+ * (about a minute on a PC): a map costs 2 x 48 x (hold + record) excitation
+ * periods, and a period 1 / (f dt) steps, so maps at low frequencies cost
+ * the most (1 Hz at dt = 2e-5 s: 4.8e8 steps). observer_design refuses more,
+ * with the estimate. */
+#define OBSERVER_DESIGN_MAX_STEPS 2e8
 
 /* Map frequencies are spaced by at most this ratio, so that every frequency
  * between the first and the last is within 1 % of one (the observer's

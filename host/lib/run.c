@@ -77,9 +77,15 @@ static bs_status advance(bs_sim *sim, const run_options *options, uint64_t step,
         }
         return bs_sim_step_measured(sim, (bs_real)mean);
     }
+    return run_step_harmonic(sim, plan, options->dt, step, frequency, amplitude);
+}
+
+bs_status run_step_harmonic(bs_sim *sim, const schedule *plan, double dt, uint64_t step, double *frequency,
+                            double *amplitude)
+{
     if (plan && plan->points > 0) {
         double f, a;
-        schedule_at(plan, ((double)step - 0.5) * options->dt, &f, &a);
+        schedule_at(plan, ((double)step - 0.5) * dt, &f, &a);
         if (f != *frequency || a != *amplitude) {
             const bs_status status = bs_sim_set_excitation(sim, (bs_real)f, (bs_real)a);
             if (status != BS_OK)

@@ -58,6 +58,15 @@ typedef struct run_result {
  * number, gives 2^53 without converting it. */
 uint64_t run_step_count(double t_end, double dt);
 
+/* Takes step number step (1, 2, ...) under the harmonic excitation: the
+ * scene's, or plan's frequency and amplitude at the step's midpoint (plan
+ * NULL or without points: the scene's), handed to the sim when they change
+ * (*frequency, *amplitude: what the sim has; -1 before the first step). The
+ * one place a scheduled excitation is stepped: `run`, `twin-plant` and the
+ * reports take the same base acceleration sample for sample. */
+bs_status run_step_harmonic(bs_sim *sim, const schedule *plan, double dt, uint64_t step, double *frequency,
+                            double *amplitude);
+
 /* Runs scene from rest for run_step_count(t_end, dt) steps. Returns 0 when
  * the run completed and its CSV was written, -1 otherwise (result says why). */
 int run_scene(const bs_scene *scene, const run_options *options, run_result *result);
