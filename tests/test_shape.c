@@ -45,7 +45,8 @@ static void check_all_modes(int modes, int expanded)
             bs_shape_cache cache;
             bs_shape_expand(&scene, (bs_real)fmin(length, fmax(0.0, (double)x + (i % 2 ? 0.99 : -0.99) * reach
                                                                          * ((i % 7) / 6.0))), &cache);
-            bs_shape_expanded(&scene, &cache, bs_shape_offset(&scene, &cache, x), 1, BS_R(2.0) * scene.shape_scale, phi, slope);
+            bs_shape_expanded(scene.n_modes, &cache, bs_shape_offset(&scene, &cache, x), 1, BS_R(2.0) * scene.shape_scale,
+                              phi, slope);
         } else {
             bs_shape_eval(&scene, x, phi, slope);
         }

@@ -71,6 +71,8 @@ typedef struct bs_step_constants {
     bs_real stretch_rows[BS_MAX_MODES]; /* sum_j |S_ij| (sqrt(dt) S), the exact stability bound */
     bs_real stretch_limit;              /* a step with 0 <= E below this is within the stability
                                            limit (core/src/bs_beam.c); -1: no such shortcut */
+    int stretch_parity;                 /* 1: S_ij = 0 wherever i + j is odd (modes alternately
+                                           symmetric and antisymmetric): half the products */
 #endif
     bs_real stiffness_limit;            /* 4 / dt^2 [1/s^2], less the open patch's stiffness */
     bs_real corner[BS_CORNERS][2];      /* r_CP,i */

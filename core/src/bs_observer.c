@@ -350,7 +350,7 @@ static void correction_of(bs_observer *obs, const bs_sim *sim, bs_real e, correc
         bs_shape_expand(scene, x, &obs->shape);
         t = bs_shape_offset(scene, &obs->shape, x);
     }
-    bs_shape_expanded(scene, &obs->shape, t, x >= BS_R(0.0) && x <= scene->length, sim->k.slope_scale, phi, slope);
+    bs_shape_expanded(n, &obs->shape, t, x >= BS_R(0.0) && x <= scene->length, sim->k.slope_scale, phi, slope);
     for (k = 0; k < n; ++k) {
         const bs_real dq = gain_q[k] * e, du = gain_u[k] * e;
         c->q[k] = sim->q_beam[k] + dq;
