@@ -32,8 +32,9 @@ typedef struct bs_contact_set {
 #endif
     bs_real beam_coef[BS_MAX_CONTACTS][BS_ROWS][2]; /* W_r,k = coef[0] phi_k + coef[1] phi'_k (0 at a stop) */
     bs_real dir_slider[BS_ROWS * BS_MAX_CONTACTS][BS_SLIDER_DOF]; /* W column, slider part */
-    bs_real phi[BS_MAX_CONTACTS][BS_MAX_MODES];  /* phi_k at active corner a (unused at a stop) */
-    bs_real slope[BS_MAX_CONTACTS][BS_MAX_MODES]; /* phi'_k there [1/(m sqrt(kg))] */
+    bs_real phi[BS_CORNERS][BS_MAX_MODES];       /* phi_k at active corner a (corners come first in
+                                                    the set, the stops after them) */
+    bs_real slope[BS_CORNERS][BS_MAX_MODES];     /* phi'_k there [1/(m sqrt(kg))] */
     bs_real delassus[BS_ROWS * BS_MAX_CONTACTS][BS_ROWS * BS_MAX_CONTACTS]; /* G = W^T M^-1 W */
 #if BS_WITH_SUBSPACE
     bs_real system[BS_ROWS * BS_MAX_CONTACTS][BS_ROWS * BS_MAX_CONTACTS + 1]; /* active-set [A | b], 3+ contacts */
