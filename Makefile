@@ -155,7 +155,7 @@ run: all
 endif
 
 # Every test in this REAL, then the core symbol check.
-test-one: $(TEST_BIN) $(OBJ)/beamslider $(TWIN_PACK)
+test-one: $(TEST_BIN) $(OBJ)/beamslider $(TWIN_PACK) step-diff-test
 	@set -e; for t in $(TEST_BIN); do echo "== $$t"; ./$$t; done
 	@sh tests/check_core_symbols.sh $(REAL) $(CORE_OBJ)
 	@sh tests/check_core_includes.sh

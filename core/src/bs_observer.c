@@ -216,7 +216,6 @@ bs_status bs_observer_init(bs_observer *obs, const bs_sim *sim, const bs_observe
 {
     const bs_observer_options defaults = bs_observer_defaults();
     const bs_status status = bs_sim_status(sim);
-    bs_lowpass2 zero;
     int i;
 
     if (!obs)
@@ -253,11 +252,14 @@ bs_status bs_observer_init(bs_observer *obs, const bs_sim *sim, const bs_observe
         obs->past_accel[i] = BS_R(0.0);
     }
     obs->quadrature = BS_R(0.0);
-    zero.stage[0] = zero.stage[1] = BS_R(0.0);
-    obs->ref_aa = obs->ref_bb = obs->ref_b = zero;
-    obs->meas_a = obs->meas_b = obs->twin_a = obs->twin_b = zero;
-    obs->defl_a = obs->defl_b = zero;
-    obs->power = obs->s_error_mean = obs->s_error_sq = zero;
+    /* stage by stage: a struct assignment may become a call of memcpy */
+    {
+        bs_lowpass2 *const filters[] = { &obs->ref_aa, &obs->ref_bb, &obs->ref_b, &obs->meas_a, &obs->meas_b,
+                                          &obs->twin_a, &obs->twin_b, &obs->defl_a, &obs->defl_b, &obs->power,
+                                          &obs->s_error_mean, &obs->s_error_sq };
+        for (i = 0; i < (int)(sizeof filters / sizeof filters[0]); ++i)
+            filters[i]->stage[0] = filters[i]->stage[1] = BS_R(0.0);
+    }
     obs->innovation_sq = BS_R(0.0);
     obs->last_outlier = 0;
     obs->gain_interval = 0;

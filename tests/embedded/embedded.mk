@@ -113,6 +113,39 @@ $(foreach c,$(EMB_HOST_TWINS),$(eval $(call emb__host,$(call emb_word,$c,1),$(ca
 EMB_LONG_PAIRS := $(foreach c,$(EMB_LONG_CHECKS),$(call emb_word,$c,1):$(call cm_elf,long-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1)):$(EMB_HOST)/$(call emb_word,$c,2).$(call emb_word,$c,3).$(call emb_word,$c,4))
 EMB_CHECK_PAIRS := $(foreach c,$(EMB_CHECKS),$(call emb_word,$c,1):$(call cm_elf,check-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1)):$(EMB_HOST)/$(call emb_word,$c,2).$(call emb_word,$c,3).$(call emb_word,$c,4))
 
+# The step of a compiled scene against the run-time core's, bit for bit
+# (tests/embedded/step_diff.c, docs/design.md "Determinism"): step_diff.c
+# built against the core compiled for SCENE (as a firmware builds it, at -O3
+# as the host core is) and against this build's own core objects with the
+# scene header as data; their outputs must be equal. `make test` runs
+# STEP_DIFF_SCENES in each REAL (test-one), `make test-long` every scene with
+# a header in configs/ in both precisions (step-diff-long).
+STEP_DIFF_SCENES := fig6 fig6_1mode
+STEP_DIFF_DIR := $(BUILD)/stepdiff
+STEP_DIFF_ALL := $(basename $(notdir $(wildcard configs/*.h)))
+define step__diff
+$(STEP_DIFF_DIR)/$1.$2.compiled: tests/embedded/step_diff.c $(CORE_SRC) $(wildcard core/*/*.h) configs/$1.h \
+        $(call emb_config_h,$1,$2,subspace)
+	@mkdir -p $$(dir $$@)
+	$$(CC) -O3 $$(BASE_CFLAGS) -I$(EMB_CONFIG)/$1.$2.subspace -Icore/include -Icore/src -Iport/host -I. \
+	    -o $$@ tests/embedded/step_diff.c $(CORE_SRC) -lm
+$(STEP_DIFF_DIR)/$1.$2.runtime: tests/embedded/step_diff.c configs/$1.h $(BUILD)/$2/include/bs_build_config.h \
+        $(CORE_SRC:%.c=$(BUILD)/$2/%.o)
+	@mkdir -p $$(dir $$@)
+	$$(CC) -O2 $$(BASE_CFLAGS) -I$(BUILD)/$2/include -Icore/include -Iport/host -I. \
+	    -DDIFF_SCENE_HEADER='"configs/$1.h"' -o $$@ tests/embedded/step_diff.c $(CORE_SRC:%.c=$(BUILD)/$2/%.o) -lm
+endef
+$(foreach s,$(STEP_DIFF_ALL),$(foreach r,double float,$(eval $(call step__diff,$s,$r))))
+step_diff_pairs = $(foreach s,$1,$(STEP_DIFF_DIR)/$s.$2.compiled:$(STEP_DIFF_DIR)/$s.$2.runtime)
+.PHONY: step-diff-test step-diff-long
+# in this REAL (test-one)
+step-diff-test: $(foreach p,$(call step_diff_pairs,$(STEP_DIFF_SCENES),$(REAL)),$(subst :, ,$p))
+	@sh tests/embedded/check_step_diff.sh $(call step_diff_pairs,$(STEP_DIFF_SCENES),$(REAL))
+step-diff-long:
+	@set -e; for real in double float; do \
+	    $(MAKE) --no-print-directory REAL=$$real STEP_DIFF_SCENES='$(STEP_DIFF_ALL)' step-diff-test; done
+TEST_LONG += step-diff-long
+
 # The twin firmware (port/cortex-m/twin): twin-firmware-test, twin-firmware-report.
 include tests/embedded/twin.mk
 

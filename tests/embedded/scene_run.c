@@ -39,7 +39,7 @@
 #include "beamslider.h"
 #include BS_SCENE_CONFIG
 #include "bs_board.h"
-#if BS_RUN_COST
+#if defined(BS_RUN_COST) && BS_RUN_COST
 #include "bs_prepare.h" /* a core-internal header: the tight phase changes its scene after init */
 #endif
 

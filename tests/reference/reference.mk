@@ -14,7 +14,8 @@ REF_DIR := tests/reference
 REF_BUILD := $(BUILD)/reference
 REF_SRC := $(filter-out $(REF_DIR)/ref_main.c $(REF_DIR)/test_reference.c,$(wildcard $(REF_DIR)/*.c))
 REF_OBJ := $(REF_SRC:%.c=$(REF_BUILD)/%.o)
-REF_INI_OBJ := $(REF_BUILD)/host/lib/scene_ini.o $(REF_BUILD)/host/lib/scene_fields.o $(REF_BUILD)/host/lib/schedule.o
+REF_INI_OBJ := $(REF_BUILD)/host/lib/scene_ini.o $(REF_BUILD)/host/lib/scene_fields.o $(REF_BUILD)/host/lib/schedule.o \
+               $(REF_BUILD)/host/lib/input_file.o
 REF_CONFIG_H := $(BUILD)/double/include/bs_build_config.h
 REF_CFLAGS := $(BASE_CFLAGS) -I$(BUILD)/double/include -Icore/include -Iport -Iport/host -Ihost/lib -I$(REF_DIR)
 REF_HEADERS := $(wildcard $(REF_DIR)/*.h host/lib/*.h)
