@@ -38,9 +38,9 @@ extern "C" {
 /* Version (docs/CHANGELOG.md). Until 1.0, a minor release may change the API
  * and the layout of bs_sim; BS_BUILD_TAG carries major and minor. */
 #define BS_VERSION_MAJOR 0
-#define BS_VERSION_MINOR 7
+#define BS_VERSION_MINOR 8
 #define BS_VERSION_PATCH 0
-#define BS_VERSION_STRING "0.7.0"
+#define BS_VERSION_STRING "0.8.0"
 #define BS_VERSION_NUMBER (BS_VERSION_MAJOR * 10000 + BS_VERSION_MINOR * 100 + BS_VERSION_PATCH)
 
 /* The build configuration as this translation unit sees it: version,
