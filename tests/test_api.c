@@ -63,6 +63,8 @@ static void check_refused(const bs_sim *bad, bs_status expected)
     assert_int_equal(bs_sim_set_solver((bs_sim *)bad, &options), expected);
     assert_int_equal(bs_sim_get_solver(bad, &options), expected);
     assert_int_equal(bs_sim_set_pcs_position((bs_sim *)bad, BS_R(0.5)), expected);
+    assert_int_equal(bs_sim_set_contact_laws((bs_sim *)bad, BS_R(0.1), BS_R(0.0)), expected);
+    assert_int_equal(bs_sim_get_contact_laws(bad, &w, &slope), expected);
     assert_int_equal(bs_sim_get_report(bad, &report), expected);
     assert_int_equal(bs_sim_get_state(bad, q, q, pose, pose), expected);
     assert_int_equal(bs_sim_set_state((bs_sim *)bad, q, q, pose, pose), expected);

@@ -37,6 +37,47 @@ static void test_init_refuses_bad_arguments(void **state)
     assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_PCS, BS_R(-0.1)), BS_E_ARGUMENT);
 }
 
+/* The contact laws a twin sets while it runs: taken from the next step on,
+ * refused outside their range (nothing changes), and what the build lacks
+ * refused too. */
+static void test_contact_laws_are_settable(void **state)
+{
+    bs_real mu = BS_R(-1.0), e_n = BS_R(-1.0);
+    uint32_t before;
+    (void)state;
+    load_fig6();
+    assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    assert_int_equal(bs_sim_init(&other, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    assert_int_equal(bs_sim_get_contact_laws(&sim, &mu, &e_n), BS_OK);
+    assert_true(mu == scene.mu && e_n == scene.e_n);
+    assert_int_equal(bs_sim_get_contact_laws(&sim, NULL, NULL), BS_OK);
+    assert_int_equal(bs_sim_set_contact_laws(&sim, BS_R(-0.01), BS_R(0.0)), BS_E_ARGUMENT);
+    assert_int_equal(bs_sim_set_contact_laws(&sim, (bs_real)NAN, BS_R(0.0)), BS_E_ARGUMENT);
+    assert_int_equal(bs_sim_set_contact_laws(&sim, (bs_real)INFINITY, BS_R(0.0)), BS_E_ARGUMENT);
+    assert_int_equal(bs_sim_set_contact_laws(&sim, BS_R(0.1), BS_R(1.01)), BS_E_ARGUMENT);
+    assert_int_equal(bs_sim_set_contact_laws(&sim, BS_R(0.1), BS_R(-0.01)), BS_E_ARGUMENT);
+    assert_int_equal(bs_sim_set_contact_laws(&sim, BS_R(0.1), (bs_real)NAN), BS_E_ARGUMENT);
+    assert_int_equal(bs_sim_get_contact_laws(&sim, &mu, &e_n), BS_OK);
+    assert_true(mu == scene.mu && e_n == scene.e_n);
+    /* the scene's own laws change nothing; others change the run */
+    assert_int_equal(bs_sim_set_contact_laws(&sim, scene.mu, scene.e_n), BS_OK);
+    for (int k = 0; k < 20000; ++k) {
+        assert_int_equal(bs_sim_step(&sim), BS_OK);
+        assert_int_equal(bs_sim_step(&other), BS_OK);
+    }
+    assert_int_equal(bs_sim_hash(&sim), bs_sim_hash(&other));
+    before = bs_sim_hash(&sim);
+    assert_int_equal(bs_sim_set_contact_laws(&sim, BS_R(2.0) * scene.mu, BS_R(0.0)), BS_OK);
+    assert_int_equal(bs_sim_get_contact_laws(&sim, &mu, &e_n), BS_OK);
+    assert_true(mu == BS_R(2.0) * scene.mu && e_n == BS_R(0.0));
+    assert_int_equal(bs_sim_hash(&sim), before); /* from the next step on */
+    for (int k = 0; k < 20000; ++k) {
+        assert_int_equal(bs_sim_step(&sim), BS_OK);
+        assert_int_equal(bs_sim_step(&other), BS_OK);
+    }
+    assert_int_not_equal(bs_sim_hash(&sim), bs_sim_hash(&other));
+}
+
 /* Each broken field is refused, and bs_scene_check names it. */
 static void test_scene_check_names_the_bad_field(void **state)
 {
@@ -251,6 +292,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_init_refuses_bad_arguments),
+        cmocka_unit_test(test_contact_laws_are_settable),
         cmocka_unit_test(test_scene_check_names_the_bad_field),
         cmocka_unit_test(test_explicit_limit_is_refused_up_front),
         cmocka_unit_test(test_failing_step_keeps_last_good_state),

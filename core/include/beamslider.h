@@ -133,6 +133,20 @@ bs_status bs_sim_set_excitation(bs_sim *sim, bs_real frequency, bs_real amplitud
  * pointer may be NULL. Returns BS_OK, BS_E_NULL or BS_E_UNINITIALISED. */
 bs_status bs_sim_get_excitation(const bs_sim *sim, bs_real *frequency, bs_real *amplitude);
 
+/* The contact laws from the next step on: Coulomb friction mu (finite,
+ * >= 0) and Newton's normal restitution e_N (in [0, 1]) at the slot's
+ * corners; bs_sim_init takes the scene's. A twin that estimates its plant's
+ * friction sets it here while it runs (docs/twin.md). A core built without
+ * friction (BS_WITH_FRICTION 0: a compiled scene with mu = 0) takes only
+ * mu = 0, one without restitution only e_N = 0. Returns BS_OK, BS_E_NULL,
+ * BS_E_UNINITIALISED or BS_E_ARGUMENT (nothing changes). The laws are part
+ * of a checkpoint. */
+bs_status bs_sim_set_contact_laws(bs_sim *sim, bs_real mu, bs_real e_n);
+
+/* The contact laws in use; either pointer may be NULL. Returns BS_OK,
+ * BS_E_NULL or BS_E_UNINITIALISED. */
+bs_status bs_sim_get_contact_laws(const bs_sim *sim, bs_real *mu, bs_real *e_n);
+
 /* The mean base acceleration the last step used [m/s^2] (0 before the first
  * step; NaN for a NULL or uninitialised sim). */
 bs_real bs_sim_base_acceleration(const bs_sim *sim);
@@ -193,9 +207,9 @@ uint32_t bs_sim_hash(const bs_sim *sim);
 uint32_t bs_scene_hash(const bs_scene *scene);
 
 /* Checkpoints: the complete state of a sim (step count, excitation phase and
- * settings, compensated parts, warm start, mode-shape caches, transducer) as
- * BS_CHECKPOINT_SIZE bytes in the caller's buffer, e.g. for flash, a file or
- * a twin that rewinds. The bytes carry a format mark, this build's tag
+ * settings, contact laws, compensated parts, warm start, mode-shape caches,
+ * transducer) as BS_CHECKPOINT_SIZE bytes in the caller's buffer, e.g. for
+ * flash, a file or a twin that rewinds. The bytes carry a format mark, this build's tag
  * (version, precision, switches, modes), the scene's hash (bs_scene_hash)
  * and a checksum; they are in the machine's byte order (another byte order is
  * refused, not converted). A sim restored from a checkpoint continues bit for
@@ -203,7 +217,7 @@ uint32_t bs_scene_hash(const bs_scene *scene);
  * setting, not state: they are neither saved nor restored. Layout:
  * docs/twin.md. */
 #define BS_CHECKPOINT_REALS                                                                   \
-    (5 + 2 * BS_MAX_MODES + 6 + 1 + BS_ROWS * BS_MAX_CONTACTS + 1                           \
+    (5 + 2 + 2 * BS_MAX_MODES + 6 + 1 + BS_ROWS * BS_MAX_CONTACTS + 1                       \
      + 2 * (1 + BS_MAX_MODES * BS_SHAPE_TERMS) + 5 * BS_WITH_PIEZO)
 #define BS_CHECKPOINT_SIZE ((size_t)(6 * 4 + 5 * 4 + 3 * 8 + 4) + (size_t)BS_CHECKPOINT_REALS * sizeof(bs_real))
 
