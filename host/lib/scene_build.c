@@ -73,6 +73,10 @@ static void compute_modes(const scene_params *p, const modal_set *modes, scene_d
     for (i = 0; i < modes->n; ++i) {
         double slope;
         d->omega_sq[i] = modes->omega[i] * modes->omega[i];
+        if (p->prewarp) { /* the leapfrog's frequency w_d obeys sin(w_d dt / 2) = w dt / 2: give it the w that makes w_d the mode's */
+            const double w = 2.0 / p->dt * sin(0.5 * modes->omega[i] * p->dt);
+            d->omega_sq[i] = w * w;
+        }
         d->damping[i] = 2.0 * p->damping_ratio * modes->omega[i];
         d->gamma[i] = modes->gamma[i];
         modal_shape(modes, i, 4.0 / 7.0, &d->phi_sensor[i], &slope);
@@ -294,6 +298,12 @@ static int check_derived(const scene_file *file, const scene_model *model, char 
                      "between it and the other clamp", where, culprit, p->patch_start, p->patch_end, p->slot_width);
             return -1;
         }
+    }
+    if (p->prewarp && p->implicit) {
+        scene_where(file, "numerics", "prewarp", where, sizeof where);
+        snprintf(err, size, "%s: [numerics] prewarp = on matches the explicit step's frequencies; the implicit "
+                 "integrator has its own: allowed with integrator = explicit only", where);
+        return -1;
     }
     if (!p->implicit && !(omega_max * p->dt < 2.0)) {
         bound_text(2.0 / omega_max, 1, limit, sizeof limit);

@@ -86,6 +86,9 @@ enum { SCENE_LOAD_NONE = BS_LOAD_NONE, SCENE_LOAD_RESISTOR = BS_LOAD_RESISTOR, S
     X(CHOICE, "numerics", "integrator", implicit, OWN, 0, 0, 0, 0, "explicit", "",                             \
       "explicit (midpoint) | implicit (modal stiffness and damping, theta method)", scene_integrators)        \
     X(REAL, "numerics", "theta", theta, OWN, 0.5, 1.0, 0, 0, "0.5", "", "theta of the implicit step", 0)       \
+    X(CHOICE, "numerics", "prewarp", prewarp, OWN, 0, 0, 0, 0, "off", "",                                    \
+      "on | off: each omega_k^2 replaced by (2/dt sin(omega_k dt/2))^2, so that the explicit step's discrete " \
+      "frequencies are the modes' (docs/design.md 4; explicit integrator only)", scene_switches)             \
     X(INT, "solver", "max_sweeps", solver_max_sweeps, OWN, 1, BS_SOLVER_MAX_SWEEPS, 0, 0,                     \
       SCENE_TEXT_OF(BS_SOLVER_DEFAULT_MAX_SWEEPS), "", "cap on contact-solve sweeps per step (3+ contacts)", 0) \
     X(REAL, "solver", "tol_rel", solver_tol_rel, OWN, 0, HUGE_VAL, 0, 1, SCENE_TEXT_OF(BS_SOLVER_DEFAULT_TOL_REL), "", \
