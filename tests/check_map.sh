@@ -2,9 +2,9 @@
 # check_map.sh - beamslider map, map-merge and --set on the command line
 # (docs/maps.md): the same tables whatever the number of workers or shards,
 # resume after a kill -9, refusal of another map's folder and of bad input
-# (exit 2, nothing written), and the outcome classes of the papers' six
-# scenarios (majority of 3 starts). Small maps of short runs, so that
-# make test stays quick.
+# (exit 2, nothing written), and fig6's outcome class (the papers' six
+# scenarios are tests/check_scenarios.sh, in make test-long). Small maps of
+# short runs, so that make test stays quick.
 #
 # usage, from the repository root:  sh tests/check_map.sh PATH/TO/beamslider
 
@@ -230,29 +230,14 @@ damaged "with another header" "map.csv:1: not the header of this map's table" '1
 check_status "map-plot of a map of one varied field exits 2" 2 $? "$tmp/e"
 check_has "... saying it needs two" "$tmp/e" "two different varied fields"
 
-# ---- the outcome classes of the papers' six scenarios (docs/validation.md
-# section 7): the class most of 3 starts end in. 18 runs of 60-120 s: the
-# plain double and float builds do them, the sanitizer pass (robustness-asan,
-# which sets ASAN_OPTIONS; several times slower) checks the rest.
-if [ -n "${ASAN_OPTIONS:-}" ]; then
-    echo "check_map: the six scenarios are left to the plain builds (ASAN_OPTIONS is set)"
-    echo "check_map: $passed passed, $failed failed ($bin)"
-    [ "$failed" -eq 0 ]
-    exit
+# ---- the outcome class of fig6 from its own start: the papers' signature move
+# (a smoke of the classification; all six scenarios, 3 starts each, are
+# tests/check_scenarios.sh in `make test-long`)
+if [ -z "${ASAN_OPTIONS:-}" ]; then
+    "$bin" map configs/fig6.ini --jobs 1 --out "$tmp/scene_fig6" >"$tmp/o" 2>"$tmp/e"
+    got=$(tail -n 1 "$tmp/scene_fig6/map.csv" 2>/dev/null | cut -d, -f3)
+    if [ "$got" = signature ]; then pass "fig6: signature"; else fail "fig6: signature" "got ${got:-nothing}; $(cat "$tmp/e")"; fi
 fi
-for scene in fig6 fig7 fig8 fig9 fig12a fig12b; do echo "$scene"; done |
-    xargs -P 2 -I '{}' "$bin" map configs/'{}'.ini --repeat 3 --jobs 1 --out "$tmp/scene_{}" \
-        >"$tmp/o" 2>"$tmp/e"
-for pair in fig6:signature fig7:trivial fig8:relaxation fig9:self_damping fig12a:trivial fig12b:signature; do
-    scene=${pair%%:*}
-    want=${pair#*:}
-    got=$(tail -n 1 "$tmp/scene_$scene/map.csv" 2>/dev/null | cut -d, -f3,4)
-    if [ "${got%%,*}" = "$want" ]; then
-        pass "$scene: $want (agreement ${got#*,} of 3 starts)"
-    else
-        fail "$scene: $want" "got ${got:-nothing}; $(cat "$tmp/e")"
-    fi
-done
 
 echo "check_map: $passed passed, $failed failed ($bin)"
 [ "$failed" -eq 0 ]
