@@ -373,5 +373,31 @@ check_has "--version names the version" "$tmp/o" "beamslider $(sed -n 's/^#defin
 "$bin" fields extra >"$tmp/o" 2>"$tmp/e"
 check_status "fields with an argument exits 2" 2 $? "$tmp/e"
 
+# ---- help: each command's own, and the top-level usage lists every option
+"$bin" --help >"$tmp/usage" 2>"$tmp/e"
+check_status "--help exits 0" 0 $? "$tmp/e"
+for command in modes gen sweep run twin twin-plant twin-gains map map-merge map-plot fields; do
+    "$bin" "$command" --help >"$tmp/o" 2>"$tmp/e"
+    status=$?
+    if [ "$status" -eq 0 ] && [ "$(head -n 1 "$tmp/o" | cut -d' ' -f1-3)" = "usage: beamslider $command" ] \
+        && ! grep -q "^usage: beamslider [a-z-]* " "$tmp/e"; then
+        pass "$command --help prints its own usage (exit 0)"
+    else
+        fail "$command --help prints its own usage (exit 0)" "exit $status: $(head -n 2 "$tmp/o") $(cat "$tmp/e")"
+    fi
+    if [ "$(grep -c '^usage: ' "$tmp/o")" -ne 1 ]; then
+        fail "$command --help prints one command's usage only" "$(grep '^usage: ' "$tmp/o")"
+    fi
+    missing=""
+    for option in $(grep -o -e '--[a-z][a-z-]*' "$tmp/o" | sort -u); do
+        grep -q -e "$option" "$tmp/usage" || missing="$missing $option"
+    done
+    if [ -z "$missing" ]; then
+        pass "beamslider --help lists every option of $command"
+    else
+        fail "beamslider --help lists every option of $command" "missing:$missing"
+    fi
+done
+
 echo "check_cli: $passed passed, $failed failed ($bin)"
 [ "$failed" -eq 0 ]

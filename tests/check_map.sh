@@ -86,7 +86,7 @@ for attempt in $(seq 1 200); do
 done
 kill -9 "$map_pid" 2>/dev/null
 wait "$map_pid" 2>/dev/null
-sleep 0.3 # the workers die with their parent (PR_SET_PDEATHSIG)
+sleep 0.3 # the worker threads die with the process
 rows=$(cat "$tmp"/killed/runs-*.csv | grep -c -v '^case,')
 if [ "$rows" -ge 4 ] && [ "$rows" -lt 24 ]; then
     pass "kill -9 stopped the map midway ($rows of 24 cases done)"

@@ -1,5 +1,5 @@
 /* test_map.c - the map's grid, shards, rows, folder identity and result
- * files (host/lib/map_grid.c, map_case.c, map_store.c, map_table.c). The
+ * files (host/lib/map/map_grid.c, map_case.c, map_store.c, map_table.c). The
  * whole command (workers, resume after a kill, shards, refusals) is checked
  * by tests/check_map.sh. Run from the repository root. */
 #define _GNU_SOURCE /* RTLD_NEXT */

@@ -1,4 +1,4 @@
-/* test_outcome.c - the outcome classes of a free run (host/lib/outcome.c):
+/* test_outcome.c - the outcome classes of a free run (host/lib/map/outcome.c):
  * each rule of outcome.h on a made-up trajectory that just meets it and one
  * that just misses it, the rules' order, the 1 s averages and the settled
  * figures. (The six scenarios of the papers are classified from real runs

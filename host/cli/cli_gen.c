@@ -24,7 +24,7 @@
  * float needs fewer pieces, and a field whose text differs between the two is
  * printed under #if BS_REAL_FLOAT. Text from the scene file (name,
  * description, the path) reaches the header only through the C writer
- * (host/lib/out_c.h): as string literals, and the name mapped into the
+ * (host/lib/io/out_c.h): as string literals, and the name mapped into the
  * include guard. The output depends only on the scene file, not
  * on this binary's bs_real.
  */
@@ -212,6 +212,11 @@ static void append_switches(text *t, const scene_params *p, const scene_model *m
     append_zero_patterns(t, d);
     append(t, "#endif\n#endif\n\n");
 }
+
+const char cli_gen_synopsis[] = "beamslider gen SCENE.ini";
+const char cli_gen_help[] =
+    "  the scene as a C header for a compile-time (embedded) build, on stdout\n"
+    "  (docs/porting.md section 2; make configs writes configs/*.h with it)\n";
 
 int cli_gen(int argc, char **argv)
 {

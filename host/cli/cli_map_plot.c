@@ -34,12 +34,13 @@
 #include "out_gnuplot.h"
 #include "outcome.h"
 
-static const char plot_usage[] =
-    "usage: beamslider map-plot DIR [--x FIELD] [--y FIELD] [--at FIELD=VALUE ...]\n"
-    "                           [--mark X,Y,LABEL ...] [--title TEXT] [--out PREFIX]\n"
-    "  heatmaps of DIR/map.csv (beamslider map, then map-merge for shards) over two varied\n"
-    "  fields (default: the first two --vary of the map): outcome class (the class most\n"
-    "  starts ended in), agreement (the fraction that did), final position s_final (mean\n"
+const char cli_map_plot_synopsis[] =
+    "beamslider map-plot DIR [--x FIELD] [--y FIELD] [--at FIELD=VALUE ...] [--mark X,Y,LABEL ...]\n"
+    "        [--title TEXT] [--out PREFIX]";
+const char cli_map_plot_help[] =
+    "  heatmaps of a map with gnuplot (docs/maps.md section 5)\n"
+    "  Of DIR/map.csv (beamslider map, then map-merge for shards) over two varied fields (default: the first two --vary of the map): outcome class (the class\n"
+    "  most starts ended in), agreement (the fraction that did), final position s_final (mean\n"
     "  and spread over the starts), settled amplitude amp_h and, with a transducer, power.\n"
     "  --at fixes every other varied field; --mark draws a labelled point at field values\n"
     "  X,Y; --title starts each title (default: the scene's name). PNGs PREFIX_outcome.png,\n"
@@ -452,10 +453,6 @@ int cli_map_plot(int argc, char **argv)
     int vx, vy, v, k, status = CLI_USAGE;
     size_t n_cells, c;
 
-    if (argc >= 1 && (!strcmp(argv[0], "--help") || !strcmp(argv[0], "-h"))) {
-        fputs(plot_usage, stdout);
-        return CLI_OK;
-    }
     if (parse_options(argc, argv, &cli) != 0)
         return CLI_USAGE;
     if (strlen(cli.prefix ? cli.prefix : cli.dir) > 4000) {

@@ -1,11 +1,15 @@
-/* measured_signals.c - reading the measured-signals format
+/* measured_signals.c - reading and writing the measured-signals format
  * (measured_signals.h states the grammar; docs/twin.md, "Measured signals
  * file"). One table of header keys; every value parsed exactly, with its
  * unit: "50 kHz" is not read as 50 Hz, "1e-6" without its unit is refused.
+ * The writer writes the keys of the same table, so what it writes is what
+ * the reader takes (tests/test_measured.c reads back what it wrote).
  */
 #define _POSIX_C_SOURCE 200809L /* fseeko, ftello */
 
 #include "measured_signals.h"
+
+#include "out_text.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -319,4 +323,37 @@ void measured_close(measured_reader *m)
     if (m->file && m->file != stdin)
         fclose(m->file);
     m->file = NULL;
+}
+
+int measured_write_header(FILE *out, const measured_header *h, const char *plant)
+{
+    const int signal = h->signal == MEASURED_VOLTAGE ? MEASURED_VOLTAGE : MEASURED_DEFLECTION;
+    int failed = fprintf(out, "%s (docs/twin.md, \"Observer\")\n", MEASURED_TITLE) < 0;
+    if (plant) {
+        char *line = malloc(strlen(plant) + 1);
+        if (!line)
+            return -1;
+        strcpy(line, plant);
+        failed |= fprintf(out, "# %s = %s\n", key_names[KEY_PLANT], out_text_one_line(line)) < 0;
+        free(line);
+    }
+    failed |= fprintf(out, "# %s = %.12g Hz\n# %s = %s\n# %s = %s\n# %s = m/s^2\n", key_names[KEY_RATE], h->rate,
+                      key_names[KEY_SIGNAL], signal_names[signal], key_names[KEY_SIGNAL_UNIT], signal_units[signal],
+                      key_names[KEY_ACCEL_UNIT]) < 0;
+    if (!isnan(h->latency))
+        failed |= fprintf(out, "# %s = %.9g s\n", key_names[KEY_LATENCY], h->latency) < 0;
+    if (!isnan(h->noise))
+        failed |= fprintf(out, "# %s = %.9g %s\n", key_names[KEY_NOISE], h->noise, signal_units[signal]) < 0;
+    if (!isnan(h->accel_noise))
+        failed |= fprintf(out, "# %s = %.9g m/s^2\n", key_names[KEY_ACCEL_NOISE], h->accel_noise) < 0;
+    failed |= fprintf(out, "%s,%s,%s%s%s\n", column_names[0], column_names[1], column_names[2],
+                      h->has_truth ? "," : "", h->has_truth ? column_names[3] : "") < 0;
+    return failed ? -1 : 0;
+}
+
+int measured_write_row(FILE *out, const measured_row *row, int has_truth)
+{
+    if (has_truth)
+        return fprintf(out, "%.12g,%.9g,%.9g,%.9g\n", row->t, row->base_accel, row->signal, row->s_true) < 0 ? -1 : 0;
+    return fprintf(out, "%.12g,%.9g,%.9g\n", row->t, row->base_accel, row->signal) < 0 ? -1 : 0;
 }

@@ -118,68 +118,91 @@ static size_t put_number(char *row, size_t used, size_t size, const char *format
     return put(row, used, size, format, value);
 }
 
-int map_case_run(const map_grid *grid, const scene_file *base, long c, char *row, size_t size, char *err,
-                 size_t err_size)
+/* What one case builds: its scene as read, the core scene, the modal data. */
+typedef struct case_scene {
+    scene_file file;
+    bs_scene scene;
+    scene_model model;
+} case_scene;
+
+/* Builds case c's scene into w and runs it; the per-period rows give the
+ * outcome. *built: the scene built (else err says why, and the case is a
+ * fault). 0, or -1 when out of memory (err says so). */
+static int run_case(const map_grid *grid, const scene_file *base, long c, case_scene *w, run_result *result,
+                    outcome_figures *figures, int *built, char *err, size_t err_size)
 {
-    static scene_file file;   /* static: large; one case at a time in a process */
-    static bs_scene scene;
-    static scene_model model;
-    const long point = map_case_point(grid, c);
     run_options options;
-    run_result result;
     outcome_input input;
-    outcome_figures figures;
     periods trajectory;
     char *text = NULL;
     size_t text_size = 0;
-    size_t used;
     FILE *memory;
-    int v, built;
 
-    memset(&result, 0, sizeof result);
+    memset(result, 0, sizeof *result);
     memset(&trajectory, 0, sizeof trajectory);
     memset(&input, 0, sizeof input);
-    result.status = BS_E_SCENE;
-    built = map_case_scene(grid, base, c, &file, err, err_size) == 0
-            && scene_build(&file, &scene, &model, err, err_size) == 0;
-    if (built) {
+    result->status = BS_E_SCENE;
+    *built = map_case_scene(grid, base, c, &w->file, err, err_size) == 0
+             && scene_build(&w->file, &w->scene, &w->model, err, err_size) == 0;
+    if (*built) {
         memory = open_memstream(&text, &text_size);
         if (!memory) {
             snprintf(err, err_size, "case %ld: out of memory", c);
             return -1;
         }
         memset(&options, 0, sizeof options);
-        options.model = (bs_model)file.params.model;
-        options.s0 = file.params.s0;
-        options.t_end = file.params.t_end;
-        options.dt = file.params.dt;
-        options.solver = scene_solver(&file.params);
+        options.model = (bs_model)w->file.params.model;
+        options.s0 = w->file.params.s0;
+        options.t_end = w->file.params.t_end;
+        options.dt = w->file.params.dt;
+        options.solver = scene_solver(&w->file.params);
         options.every = 1;
         options.periods = memory;
-        run_scene(&scene, &options, &result); /* result.status says how it ended */
-        if (fclose(memory) != 0 || result.write_failed || read_periods(text, &trajectory) != 0) {
-            snprintf(err, err_size, "case %ld: out of memory for its periods", c);
+        run_scene(&w->scene, &options, result); /* result->status says how it ended */
+        if (fclose(memory) != 0 || result->write_failed || result->out_of_memory
+            || read_periods(text, &trajectory) != 0) {
+            snprintf(err, err_size, "case %ld: out of memory for its run", c);
             free(text);
             free_periods(&trajectory);
             return -1;
         }
         free(text);
-        input.stop_min = (double)scene.stop_min / (double)scene.length;
-        input.stop_max = (double)scene.stop_max / (double)scene.length;
+        input.stop_min = (double)w->scene.stop_min / (double)w->scene.length;
+        input.stop_max = (double)w->scene.stop_max / (double)w->scene.length;
     }
     input.t = trajectory.t;
     input.amp_h = trajectory.amp;
     input.s = trajectory.s;
     input.periods = trajectory.count;
-    input.s0 = file.params.s0;
-    input.completed = built && result.status == BS_OK;
-    outcome_classify(&input, &figures);
+    input.s0 = w->file.params.s0;
+    input.completed = *built && result->status == BS_OK;
+    outcome_classify(&input, figures);
     free_periods(&trajectory);
+    return 0;
+}
 
+int map_case_run(const map_grid *grid, const scene_file *base, long c, char *row, size_t size, char *err,
+                 size_t err_size)
+{
+    case_scene *w = calloc(1, sizeof *w); /* large: on the heap, one per case (cases run in threads) */
+    const long point = map_case_point(grid, c);
+    run_result result;
+    outcome_figures figures;
+    size_t used;
+    int v, built;
+
+    if (!w) {
+        snprintf(err, err_size, "case %ld: out of memory", c);
+        return -1;
+    }
+    if (run_case(grid, base, c, w, &result, &figures, &built, err, err_size) != 0) {
+        free(w);
+        return -1;
+    }
     used = put(row, 0, size, "%ld,%ld,%d", c, point, map_case_repeat(grid, c));
     for (v = 0; v < grid->vary_count; ++v)
         used = put(row, used, size, ",%s", grid->vary[v].values[map_point_value(grid, point, v)]);
-    used = put(row, used, size, ",%.9g,%s,%s", file.params.s0, status_word(result.status),
+    used = put(row, used, size, ",%.9g,%s,%s", w->file.params.s0, status_word(result.status),
                outcome_name(figures.outcome));
     used = put_number(row, used, size, ",%.9g", figures.s_last);
     used = put_number(row, used, size, ",%.9g", built ? result.s_final : (double)NAN);
@@ -196,6 +219,7 @@ int map_case_run(const map_grid *grid, const scene_file *base, long c, char *row
                (unsigned long long)result.solve.unconverged_steps, result.solve.max_sweeps,
                result.solve.max_systems, (unsigned)result.hash, result.wall_s);
     used = put(row, used, size, "%08x\n", (unsigned)map_row_check(row, used));
+    free(w);
     if (used >= size) {
         snprintf(err, err_size, "case %ld: its row is longer than %lu characters", c, (unsigned long)size);
         return -1;

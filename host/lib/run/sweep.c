@@ -17,7 +17,6 @@
 #include <string.h>
 #include "bs_monitor.h"
 #include "bs_platform.h"
-#include "progress.h"
 
 const char sweep_csv_header[] =
     "s,amp_h,v_mean,mean_sweeps,max_sweeps,unconverged_steps,contact_steps,steps\n";
@@ -132,7 +131,6 @@ int sweep_run(const bs_scene *scene, const sweep_options *options, sweep_result 
     bs_monitor monitor;
     const int n = sweep_grid_size(options->from, options->to, options->step);
     const double start = bs_platform_seconds();
-    progress bar;
     int i;
 
     result->status = BS_OK;
@@ -158,9 +156,6 @@ int sweep_run(const bs_scene *scene, const sweep_options *options, sweep_result 
         fail_write(result);
     if (options->trace && fputs(sweep_trace_header, options->trace) < 0)
         fail_write(result);
-    progress_start(&bar, options->down ? "sweep down" : "sweep up");
-    if (!options->show_progress)
-        bar.enabled = 0;
 
     for (i = 0; i < n && !result->write_failed; ++i) {
         const int index = options->down ? n - 1 - i : i;
@@ -185,13 +180,12 @@ int sweep_run(const bs_scene *scene, const sweep_options *options, sweep_result 
                        (unsigned long long)point.steps) < 0)
             fail_write(result);
         result->points_done = i + 1;
-        {
+        if (options->progress) {
             char detail[64];
             snprintf(detail, sizeof detail, "s~=%.4f amp=%.3f h (%d/%d)", point.s, point.amp_h, i + 1, n);
-            progress_update(&bar, (double)(i + 1) / n, detail);
+            options->progress(options->progress_context, (double)(i + 1) / n, detail);
         }
     }
-    progress_end(&bar);
     result->wall_s = bs_platform_seconds() - start;
     if ((options->csv && fflush(options->csv) != 0) || (options->trace && fflush(options->trace) != 0))
         fail_write(result);

@@ -5,6 +5,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include "beamslider.h"
+#include "progress_hook.h"
 #include "schedule.h"
 #include "solve_tally.h"
 
@@ -17,10 +18,16 @@ typedef struct run_options {
     double t_end;        /* [s] */
     double dt;           /* the scene's step in double (time = step * dt) [s] */
     bs_solver_options solver; /* contact-solve settings */
-    long every;          /* CSV row every this many steps */
+    long every;          /* CSV row (and on_step) every this many steps, >= 1 */
     FILE *csv;           /* NULL: no CSV */
+    /* NULL, or called after step 0 (the start) and every `every` steps with
+     * the sim, the step number and its time step * dt [s]; nonzero stops the
+     * run there (result->stopped) */
+    int (*on_step)(void *context, const bs_sim *sim, uint64_t step, double t);
+    void *on_step_context;
     FILE *periods;       /* NULL: no per-period CSV (run_periods_header) */
-    int show_progress;   /* progress bar on a terminal */
+    progress_hook progress; /* NULL, or told the part of the steps done */
+    void *progress_context;
     const schedule *excitation_schedule; /* NULL or no points: the scene's constant excitation */
     /* NULL: the harmonic excitation (the scene's or the schedule's); else a
      * measured one: base_accel(source, &mean) gives the mean base acceleration
@@ -35,6 +42,8 @@ typedef struct run_result {
     int write_failed;          /* an output could not be written */
     int write_errno;           /* errno of the first failed write */
     int input_failed;          /* the measured excitation could not be read on */
+    int stopped;               /* on_step asked to stop */
+    int out_of_memory;         /* no room for the sim: nothing was run */
     uint64_t steps;            /* steps completed */
     double t;                  /* simulated time reached [s] */
     double s_final;
@@ -54,7 +63,7 @@ typedef struct run_result {
 } run_result;
 
 /* The steps of a run: round(t_end / dt), and at most 2^53 (the scene's
- * check, host/lib/scene_build.c): a larger quotient, or one that is not a
+ * check, host/lib/scene/scene_build.c): a larger quotient, or one that is not a
  * number, gives 2^53 without converting it. */
 uint64_t run_step_count(double t_end, double dt);
 
@@ -68,7 +77,8 @@ bs_status run_step_harmonic(bs_sim *sim, const schedule *plan, double dt, uint64
                             double *amplitude);
 
 /* Runs scene from rest for run_step_count(t_end, dt) steps. Returns 0 when
- * the run completed and its CSV was written, -1 otherwise (result says why). */
+ * the run completed and its CSV was written, -1 otherwise (result says why).
+ * Holds no state between calls: runs may go on in several threads at once. */
 int run_scene(const bs_scene *scene, const run_options *options, run_result *result);
 
 /* CSV header lines of run_scene's step rows and per-period rows; with a

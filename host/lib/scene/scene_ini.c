@@ -19,11 +19,14 @@
  * wins and names file, line, field, value and the allowed range.
  */
 
+#define _POSIX_C_SOURCE 200809L /* fmemopen */
+
 #include "scene_ini.h"
 
 #include <ctype.h>
 #include <errno.h>
 #include <ini.h>
+#include <pthread.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -46,6 +49,7 @@ typedef struct parse {
     scene_file *scene;
     reader *in;
     int file;         /* index into scene->files */
+    const char *text; /* NULL, or the text of this file (scene_load_text) */
     int scan_base;    /* 1: only look for [scene] base */
     char base[SCENE_PATH];
     int base_line;    /* line of [scene] base, 0 if none */
@@ -431,7 +435,14 @@ static int run_parser(parse *p)
     int result;
 
     memset(&in, 0, sizeof in);
-    if (open_scene_file(path, &in.file, &verb, why, sizeof why) != 0) {
+    if (p->text) {
+        /* fmemopen reads the caller's text as the file (it is not written:
+         * "r" mode) */
+        if (!(in.file = fmemopen((char *)p->text, strlen(p->text), "r"))) {
+            snprintf(p->err, p->err_size, "%s: cannot read the scene text: %s", path, strerror(errno));
+            return -1;
+        }
+    } else if (open_scene_file(path, &in.file, &verb, why, sizeof why) != 0) {
         snprintf(p->err, p->err_size, "%s: cannot %s scene file: %s", path, verb, why);
         return -1;
     }
@@ -478,7 +489,7 @@ static int add_file(scene_file *scene, const char *path, char *err, size_t err_s
     return scene->file_count++;
 }
 
-static int load_file(scene_file *scene, const char *path, char *err, size_t err_size)
+static int load_file(scene_file *scene, const char *path, const char *text, char *err, size_t err_size)
 {
     parse p;
     const int file = add_file(scene, path, err, err_size);
@@ -488,6 +499,7 @@ static int load_file(scene_file *scene, const char *path, char *err, size_t err_
     memset(&p, 0, sizeof p);
     p.scene = scene;
     p.file = file;
+    p.text = text;
     p.err = err;
     p.err_size = err_size;
     p.scan_base = 1;
@@ -510,7 +522,7 @@ static int load_file(scene_file *scene, const char *path, char *err, size_t err_
             return -1;
         }
         fclose(probe);
-        if (load_file(scene, base_path, err, err_size) != 0)
+        if (load_file(scene, base_path, NULL, err, err_size) != 0)
             return -1;
     }
     p.scan_base = 0;
@@ -547,7 +559,18 @@ static int default_name(scene_file *scene, const char *path)
     return is_utf8(scene->params.name);
 }
 
-int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
+/* libinih's switches are globals of that library: set once, whichever
+ * thread loads the first scene (an indented line without = is an error,
+ * not a silent continuation). */
+static pthread_once_t inih_configured = PTHREAD_ONCE_INIT;
+
+static void configure_inih(void)
+{
+    ini_allow_multiline = 0;
+}
+
+/* Reads path, or text under the name path when text is not NULL. */
+static int load(const char *path, const char *text, scene_file *scene, char *err, size_t err_size)
 {
     int i;
     int name_from_path;
@@ -555,7 +578,7 @@ int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
     memset(scene, 0, sizeof *scene);
     for (i = 0; i < SCENE_MAX_FIELDS; ++i)
         scene->set_file[i] = SCENE_NOT_SET;
-    ini_allow_multiline = 0; /* an indented line without = is an error, not a silent continuation */
+    pthread_once(&inih_configured, configure_inih);
     name_from_path = default_name(scene, path);
     for (i = 0; scene_fields[i].key; ++i) { /* optional fields start at their defaults */
         const field_spec *f = &scene_fields[i];
@@ -565,7 +588,12 @@ int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
             return -1;
         }
     }
-    if (load_file(scene, path, err, err_size) != 0)
+    if (text && strlen(text) > (size_t)SCENE_MAX_BYTES) {
+        snprintf(err, err_size, "%s: cannot read scene text: more than a scene file may have (%ld bytes, 1 MiB)",
+                 path, SCENE_MAX_BYTES);
+        return -1;
+    }
+    if (load_file(scene, path, text, err, err_size) != 0)
         return -1;
     for (i = 0; scene_fields[i].key; ++i) {
         const field_spec *f = &scene_fields[i];
@@ -583,6 +611,16 @@ int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
         return -1;
     }
     return 0;
+}
+
+int scene_load(const char *path, scene_file *scene, char *err, size_t err_size)
+{
+    return load(path, NULL, scene, err, err_size);
+}
+
+int scene_load_text(const char *name, const char *text, scene_file *scene, char *err, size_t err_size)
+{
+    return load(name, text, scene, err, err_size);
 }
 
 /* An option's text with a control character is refused as a file's line

@@ -39,6 +39,12 @@ typedef struct scene_file {
  * Returns 0, or -1 with "file:line: what is wrong" in err. */
 int scene_load(const char *path, scene_file *scene, char *err, size_t err_size);
 
+/* Reads text as the scene file named name (messages say "name:line: ...";
+ * a [scene] base is found relative to name's folder, or the working folder
+ * when name has none; the default [scene] name is name's). Checked as
+ * scene_load checks a file. Returns 0, or -1 with the message in err. */
+int scene_load_text(const char *name, const char *text, scene_file *scene, char *err, size_t err_size);
+
 /* Sets one field from text given by the command-line option origin (such as
  * --dt; shorter than SCENE_OPTION). Same checks as in a file; messages name
  * the option. Any number of options may be set, the last value of a field

@@ -1,6 +1,6 @@
-/* progress.c - terminal progress bar on stderr. */
+/* cli_progress.c - terminal progress bar on stderr (cli_progress.h). */
 #define _POSIX_C_SOURCE 200112L
-#include "progress.h"
+#include "cli_progress.h"
 
 #include <stdio.h>
 #include <unistd.h>
@@ -8,7 +8,7 @@
 
 #define BAR_WIDTH 30
 
-void progress_start(progress *bar, const char *label)
+void cli_progress_start(cli_progress *bar, const char *label)
 {
     bar->enabled = isatty(STDERR_FILENO);
     bar->start = bs_platform_seconds();
@@ -16,7 +16,7 @@ void progress_start(progress *bar, const char *label)
     bar->label = label;
 }
 
-void progress_update(progress *bar, double fraction, const char *detail)
+void cli_progress_update(cli_progress *bar, double fraction, const char *detail)
 {
     const double now = bs_platform_seconds();
     const double elapsed = now - bar->start;
@@ -31,6 +31,8 @@ void progress_update(progress *bar, double fraction, const char *detail)
         fraction = 0.0;
     if (fraction > 1.0)
         fraction = 1.0;
+    if (!detail)
+        detail = "";
     filled = (int)(fraction * BAR_WIDTH);
     for (i = 0; i < BAR_WIDTH; ++i)
         cells[i] = i < filled ? '#' : '.';
@@ -43,7 +45,12 @@ void progress_update(progress *bar, double fraction, const char *detail)
     fflush(stderr);
 }
 
-void progress_end(progress *bar)
+void cli_progress_hook(void *bar, double fraction, const char *detail)
+{
+    cli_progress_update((cli_progress *)bar, fraction, detail);
+}
+
+void cli_progress_end(cli_progress *bar)
 {
     if (bar->enabled && bar->last_draw > 0.0) {
         fprintf(stderr, "\r%*s\r", BAR_WIDTH + 60, "");

@@ -9,7 +9,7 @@
  *   member    where it is stored in scene_params (offsetof designator)
  *   where     OWN: a member of scene_params, declared from this table;
  *             NESTED: inside scene_params.beam (modal_beam, the modal
- *             analysis's own input type, host/lib/modal.h)
+ *             analysis's own input type, host/lib/scene/modal.h)
  *   low, high the allowed range (REAL, INT), each end open (1) or closed (0)
  *   default   the value when the file leaves the field out, as text; 0: required
  *   unit      SI unit ("" for a pure number)

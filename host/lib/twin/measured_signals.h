@@ -1,7 +1,8 @@
 /* measured_signals.h - the measured-signals format (docs/twin.md, "Measured
- * signals file"): one grammar and one reader for every program that reads it
- * (`beamslider twin`, port/cortex-m/twin/twin_pack.c), written by
- * `beamslider twin-plant`. The reader never prints: errors come back as
+ * signals file"): one grammar, one reader for every program that reads it
+ * (`beamslider twin`, port/cortex-m/twin/twin_pack.c, libbeamslider-host)
+ * and one writer for every program that writes it (`beamslider twin-plant`,
+ * libbeamslider-host). The reader never prints: errors come back as
  * "FILE:LINE: what is wrong" in err.
  *
  * The grammar, line by line:
@@ -87,5 +88,17 @@ void measured_close(measured_reader *m);
 
 /* "deflection" or "voltage". */
 const char *measured_signal_name(int signal);
+
+/* The writer: the title line, then the header of h (rate; signal with its
+ * unit; the base acceleration's unit; latency, noise and accel_noise unless
+ * NAN; plant unless NULL, made one line so that no text of it can forge a
+ * field), then the column line (with s_true when h->has_truth). Numbers are
+ * written with enough digits to read back what was meant (rate 12, the
+ * others 9 significant digits). 0, or -1 on a write error. */
+int measured_write_header(FILE *out, const measured_header *h, const char *plant);
+
+/* One row: t (12 significant digits: long runs), base_accel, signal and,
+ * when the header has truth, s_true (9 each). 0, or -1 on a write error. */
+int measured_write_row(FILE *out, const measured_row *row, int has_truth);
 
 #endif

@@ -8,6 +8,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include "bs_observer.h"
+#include "progress_hook.h"
 #include "scene_build.h"
 
 /* What the gains are designed for. */
@@ -25,8 +26,7 @@ typedef struct observer_design_options {
     int map_count;        /* response maps at map_frequency[], 1 .. BS_OBSERVER_MAPS; 0: from the
                              scene (observer_design) */
     double map_frequency[BS_OBSERVER_MAPS]; /* [Hz], > 0, ascending */
-    void (*progress)(void *context, double fraction); /* NULL, or told the part done, [0, 1], as
-                                                         the response maps are made */
+    progress_hook progress; /* NULL, or told the part done as the response maps are made */
     void *progress_context;
 } observer_design_options;
 
@@ -70,12 +70,6 @@ observer_design_options observer_design_defaults(double noise);
  * message in err. */
 int observer_design(const scene_file *file, const scene_model *model, const bs_scene *scene,
                     const observer_design_options *options, bs_observer_gains *gains, char *err, size_t err_size);
-
-/* The observer's linear model: state x = (q_1..q_N, u_1..u_N[, v]), one step
- * x' = Phi x + Gamma a + F f (f: modal forces held over the step). Returns
- * the state size. Exposed for the tests. */
-int observer_linear_step(const scene_data *data, int with_voltage, const double *x, double base_accel,
-                         const double *force, double *next);
 
 /* Prints gains as a C header (`beamslider twin-gains`) through the C writer
  * (out_c.h): a static const bs_observer_gains named `name` (which must pass

@@ -17,10 +17,11 @@
 
 #include <errno.h>
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "bs_monitor.h"
 #include "bs_platform.h"
-#include "progress.h"
 
 const char run_csv_header[] = "t,w_sensor,s,z_r,beta,contacts,pgs_iters,pgs_residual\n";
 const char run_transducer_columns[] = ",v,p,v_s";
@@ -114,7 +115,7 @@ static void fail_write(run_result *result)
 
 int run_scene(const bs_scene *scene, const run_options *options, run_result *result)
 {
-    static bs_sim sim; /* static: large, and the CLI runs one at a time */
+    bs_sim *sim = malloc(sizeof *sim); /* large: on the heap, one per call (runs may share a process) */
     bs_monitor monitor;
     double amplitudes[RUN_AMP_PERIODS];
     const double dt = options->dt;
@@ -123,19 +124,20 @@ int run_scene(const bs_scene *scene, const run_options *options, run_result *res
     const uint64_t window_start = steps > window_steps ? steps - window_steps : 0;
     const uint64_t progress_every = 1u << 16;
     const double start = bs_platform_seconds();
-    progress bar;
     bs_transducer_output transducer;
     uint64_t step;
     double energy_window_start = 0.0; /* [J] at step window_start */
     double frequency = -1.0, amplitude = -1.0; /* the schedule's, as the sim has them (advance) */
     int i;
 
-    result->status = bs_sim_init(&sim, scene, options->model, (bs_real)options->s0);
+    result->status = sim ? bs_sim_init(sim, scene, options->model, (bs_real)options->s0) : BS_E_NULL;
     if (result->status == BS_OK)
-        result->status = bs_sim_set_solver(&sim, &options->solver);
+        result->status = bs_sim_set_solver(sim, &options->solver);
+    result->out_of_memory = !sim;
     result->write_failed = 0;
     result->write_errno = 0;
     result->input_failed = 0;
+    result->stopped = 0;
     result->steps = 0;
     result->t = 0.0;
     result->s_final = result->s_min = options->s0; /* the sim is only readable once init succeeded */
@@ -148,36 +150,39 @@ int run_scene(const bs_scene *scene, const run_options *options, run_result *res
     result->transducer = 0;
     result->energy = result->power_mean = result->power_window = 0.0;
     result->power_last = (double)NAN;
-    if (result->status != BS_OK)
+    if (result->status != BS_OK) {
+        free(sim);
         return -1;
-    result->s_final = result->s_min = (double)bs_sim_position(&sim);
-    bs_sim_get_transducer(&sim, &transducer);
+    }
+    result->s_final = result->s_min = (double)bs_sim_position(sim);
+    bs_sim_get_transducer(sim, &transducer);
     result->transducer = transducer.present;
-    bs_monitor_init(&monitor, &sim);
+    bs_monitor_init(&monitor, sim);
     if (options->csv
-        && (write_header(options->csv, transducer.present) || write_row(options->csv, 0.0, &sim)))
+        && (write_header(options->csv, transducer.present) || write_row(options->csv, 0.0, sim)))
         fail_write(result);
     if (options->periods && fputs(run_periods_header, options->periods) < 0)
         fail_write(result);
-    progress_start(&bar, options->model == BS_MODEL_PCS ? "pcs" : "run");
+    if (options->on_step && options->on_step(options->on_step_context, sim, 0, 0.0) != 0)
+        result->stopped = 1;
 
-    for (step = 1; step <= steps && !result->write_failed; ++step) {
+    for (step = 1; step <= steps && !result->write_failed && !result->stopped; ++step) {
         bs_step_report report;
         double s;
-        result->status = advance(&sim, options, step, &frequency, &amplitude, &result->input_failed);
+        result->status = advance(sim, options, step, &frequency, &amplitude, &result->input_failed);
         if (result->status != BS_OK)
             break;
         result->steps = step;
         if (step == window_start)
-            energy_window_start = load_energy(&sim);
-        bs_sim_get_report(&sim, &report);
+            energy_window_start = load_energy(sim);
+        bs_sim_get_report(sim, &report);
         solve_tally_add(&result->solve, &report);
-        s = (double)bs_sim_position(&sim);
+        s = (double)bs_sim_position(sim);
         if (s < result->s_min) {
             result->s_min = s;
             result->t_s_min = (double)step * dt;
         }
-        if (bs_monitor_update(&monitor, &sim)) {
+        if (bs_monitor_update(&monitor, sim)) {
             amplitudes[(monitor.periods - 1) % RUN_AMP_PERIODS] = (double)monitor.amplitude;
             if (options->periods
                 && fprintf(options->periods, "%.9f,%.6e,%.9f,%.6e\n", (double)step * dt,
@@ -185,35 +190,38 @@ int run_scene(const bs_scene *scene, const run_options *options, run_result *res
                            (double)monitor.transport) < 0)
                 fail_write(result);
         }
-        if (options->csv && step % (uint64_t)options->every == 0
-            && write_row(options->csv, (double)step * dt, &sim))
-            fail_write(result);
-        if (step % progress_every == 0) {
+        if (options->every > 0 && step % (uint64_t)options->every == 0) {
+            if (options->csv && write_row(options->csv, (double)step * dt, sim))
+                fail_write(result);
+            if (options->on_step && options->on_step(options->on_step_context, sim, step, (double)step * dt) != 0)
+                result->stopped = 1;
+        }
+        if (options->progress && step % progress_every == 0) {
             char detail[48];
             snprintf(detail, sizeof detail, "t=%.1f/%.1f s s=%.4f", (double)step * dt,
                      (double)steps * dt, s);
-            progress_update(&bar, (double)step / (double)steps, detail);
+            options->progress(options->progress_context, (double)step / (double)steps, detail);
         }
     }
-    progress_end(&bar);
 
     result->t = (double)result->steps * dt;
-    result->s_final = (double)bs_sim_position(&sim);
+    result->s_final = (double)bs_sim_position(sim);
     result->amp_periods = monitor.periods < RUN_AMP_PERIODS ? (int)monitor.periods : RUN_AMP_PERIODS;
     for (i = 0; i < result->amp_periods; ++i)
         result->amp_final_h += amplitudes[i];
     if (result->amp_periods > 0)
         result->amp_final_h /= result->amp_periods * 2.0 * (double)scene->half_thickness;
     if (result->transducer) {
-        result->energy = load_energy(&sim);
+        result->energy = load_energy(sim);
         result->power_mean = result->steps > 0 ? result->energy / result->t : 0.0;
         result->power_window = (double)(steps - window_start) * dt;
         if (result->steps == steps && steps > 0)
             result->power_last = (result->energy - energy_window_start) / result->power_window;
     }
     result->wall_s = bs_platform_seconds() - start;
-    result->hash = bs_sim_hash(&sim);
+    result->hash = bs_sim_hash(sim);
     if ((options->csv && fflush(options->csv) != 0) || (options->periods && fflush(options->periods) != 0))
         fail_write(result);
-    return result->status == BS_OK && !result->write_failed ? 0 : -1;
+    free(sim);
+    return result->status == BS_OK && !result->write_failed && !result->stopped ? 0 : -1;
 }

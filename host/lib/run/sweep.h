@@ -13,6 +13,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include "beamslider.h"
+#include "progress_hook.h"
 #include "solve_tally.h"
 
 #define SWEEP_MAX_POINTS 100001
@@ -39,7 +40,8 @@ typedef struct sweep_options {
     FILE *trace;              /* NULL or per-step rows (sweep_trace_header) at trace_index */
     int trace_index;          /* grid index i of the traced point (s = from + i step) */
     int trace_periods;        /* traced: the first trace_periods recorded periods, 1 .. record */
-    int show_progress;        /* progress bar on a terminal */
+    progress_hook progress;   /* NULL, or told the part of the points done */
+    void *progress_context;
 } sweep_options;
 
 typedef struct sweep_result {

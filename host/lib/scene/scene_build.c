@@ -2,8 +2,8 @@
  *
  * From the parameters of docs/model.md 8, in double (scene_data), then rounded to
  * bs_real (scene_data_round):
- *   omega_k, gamma_k, phi_k(4/7), I_ij          host/lib/modal.c
- *   mode-shape pieces                           host/lib/shape_fit.c
+ *   omega_k, gamma_k, phi_k(4/7), I_ij          host/lib/scene/modal.c
+ *   mode-shape pieces                           host/lib/scene/shape_fit.c
  *   S = sqrt(k_ax / 2L^2) I,  |S| by power iteration (S is positive semidefinite);
  *   S = 0 when the scene leaves stretching out
  *   1/J_C, or 0 when the scene locks the slider's rotation

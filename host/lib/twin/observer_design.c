@@ -2,7 +2,7 @@
  * "Observer").
  *
  * Linear model: the beam with the slider rigidly attached at s, in the
- * scene's modal coordinates (host/lib/attached.c),
+ * scene's modal coordinates (host/lib/scene/attached.c),
  *   M(s) = I + m phi phi^T + (J_C + m d^2) phi' phi'^T   (phi, phi' at s),
  *   M q'' + C q' + K q + theta_p v = -(gamma + m phi) a + f,
  * C = diag(2 D omega_k), K = diag(omega_k^2), with the patch voltage v of a
@@ -47,7 +47,7 @@
  * then one DFT bin over map_record periods. A point whose Re H has the other
  * branch's sign (the down sweep falls onto the stiff branch near the clamp)
  * is stored negative: no such branch there. The beam with the slider rigidly
- * attached (host/lib/attached.c) is no substitute: on the high branch the
+ * attached (host/lib/scene/attached.c) is no substitute: on the high branch the
  * hardening keeps the response below its resonance where the linear model is
  * far above it, and on the low branch the slider bounces.
  */
@@ -193,23 +193,6 @@ static int model_at(const scene_file *file, const scene_model *model, int attach
                          + (i == j && d->implicit) * (d->theta * d->dt * d->damping[i]
                                                       + d->theta * d->theta * d->dt * d->dt * d->omega_sq[i]);
     return invert(n, mass, m->mass_inv);
-}
-
-int observer_linear_step(const scene_data *data, int with_voltage, const double *x, double base_accel,
-                         const double *force, double *next)
-{
-    linear_model m;
-    int i, j;
-    m.d = data;
-    m.with_voltage = with_voltage;
-    m.size = 2 * data->n_modes + with_voltage;
-    for (i = 0; i < data->n_modes; ++i) {
-        for (j = 0; j < data->n_modes; ++j)
-            m.mass_inv[i][j] = i == j ? data->mode_gain[i] : 0.0;
-        m.forcing[i] = data->gamma[i];
-    }
-    model_step(&m, x, base_accel, force, next);
-    return m.size;
 }
 
 /* Phi, column by column. */
@@ -465,7 +448,7 @@ static int map_excitations(const scene_file *file, const bs_scene *scene, const 
 static int response_map(const scene_file *file, const bs_scene *scene, const observer_design_options *o,
                         bs_observer_gains *gains, char *err, size_t err_size)
 {
-    static bs_sim sim;
+    bs_sim *sim; /* large: on the heap, one per design (designs may run in threads) */
     const bs_solver_options solver = scene_solver(&file->params);
     const double s_low = (double)scene->stop_min / (double)scene->length;
     const int count = BS_OBSERVER_TABLE;
@@ -489,31 +472,37 @@ static int response_map(const scene_file *file, const bs_scene *scene, const obs
                      o->map_hold + o->map_record);
         return -1;
     }
+    if (!(sim = malloc(sizeof *sim))) {
+        snprintf(err, err_size, "observer design: out of memory");
+        return -1;
+    }
     gains->table_count = count;
     for (i = 0; i < count; ++i)
         gains->table_s[i] = (bs_real)(s_low + (0.5 - s_low) * i / (count - 1));
     for (m = 0; m < gains->map_count; ++m)
         for (branch = 0; branch < 2; ++branch) { /* 0: stiff, up from the clamp; 1: soft, down from the centre */
-            bs_status status = bs_sim_init(&sim, scene, BS_MODEL_PCS, branch ? BS_R(0.5) : gains->table_s[0]);
+            bs_status status = bs_sim_init(sim, scene, BS_MODEL_PCS, branch ? BS_R(0.5) : gains->table_s[0]);
             if (status == BS_OK)
-                status = bs_sim_set_solver(&sim, &solver);
+                status = bs_sim_set_solver(sim, &solver);
             if (status == BS_OK)
-                status = bs_sim_set_excitation(&sim, gains->map_frequency[m], gains->map_accel[m]);
+                status = bs_sim_set_excitation(sim, gains->map_frequency[m], gains->map_accel[m]);
             for (i = 0; status == BS_OK && i < count; ++i) {
                 const int j = branch ? count - 1 - i : i;
                 double h = 0.0;
-                status = map_point(&sim, (double)gains->table_s[j], o, !branch, &h);
+                status = map_point(sim, (double)gains->table_s[j], o, !branch, &h);
                 (branch ? gains->table_soft : gains->table_stiff)[m][j] = (bs_real)h;
                 done += (o->map_hold + o->map_record) / ((double)gains->map_frequency[m] * (double)scene->dt);
                 if (o->progress)
-                    o->progress(o->progress_context, done / steps);
+                    o->progress(o->progress_context, done / steps, NULL);
             }
             if (status != BS_OK) {
                 snprintf(err, err_size, "observer design: the response map's PCS sweep at %g Hz stopped: %s",
                          (double)gains->map_frequency[m], bs_status_text(status));
+                free(sim);
                 return -1;
             }
         }
+    free(sim);
     return 0;
 }
 

@@ -32,7 +32,7 @@
 #define EXCITATION_RATE_MAX 1e10
 #define EXCITATION_T0_MAX 1e9
 /* The most steps a record may give a run: 2^53, counted exactly in a double
- * (as [run] t_end / dt is, host/lib/scene_build.c). */
+ * (as [run] t_end / dt is, host/lib/scene/scene_build.c). */
 #define EXCITATION_MAX_STEPS 9007199254740992.0
 #define EXCITATION_CSV_LINE 256 /* a CSV line holds at most 255 characters before its end */
 

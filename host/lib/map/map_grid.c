@@ -52,7 +52,7 @@ static int range_number(const char *spec, const char *text, size_t length, const
 static int check_value(const scene_file *base, const map_vary *vary, const char *spec, const char *value,
                        char *out, char *err, size_t size)
 {
-    static scene_file scratch; /* static: large */
+    scene_file *scratch; /* large: on the heap */
     char assignment[MAP_FIELD + 256];
     char why[1024];
 
@@ -60,14 +60,20 @@ static int check_value(const scene_file *base, const map_vary *vary, const char 
         snprintf(err, size, "--vary %s: value %.40s... too long", spec, value);
         return -1;
     }
-    snprintf(assignment, sizeof assignment, "%s=%s", vary->name, value);
-    scratch = *base;
-    if (scene_set_assignment(&scratch, "--vary", assignment, why, sizeof why) != 0) {
-        const char *detail = strstr(why, ": [");
-        snprintf(err, size, "--vary %s: value %s%s", spec, value, detail ? detail : why);
+    if (!(scratch = malloc(sizeof *scratch))) {
+        snprintf(err, size, "--vary %s: out of memory", spec);
         return -1;
     }
-    scene_value_text(&scratch.params, &scene_fields[vary->field], out, MAP_VALUE);
+    snprintf(assignment, sizeof assignment, "%s=%s", vary->name, value);
+    *scratch = *base;
+    if (scene_set_assignment(scratch, "--vary", assignment, why, sizeof why) != 0) {
+        const char *detail = strstr(why, ": [");
+        snprintf(err, size, "--vary %s: value %s%s", spec, value, detail ? detail : why);
+        free(scratch);
+        return -1;
+    }
+    scene_value_text(&scratch->params, &scene_fields[vary->field], out, MAP_VALUE);
+    free(scratch);
     return 0;
 }
 

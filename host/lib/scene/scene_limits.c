@@ -3,7 +3,7 @@
  * Every quantity the host derives from the fields (in double: the beam
  * width, the bending stiffness, the modal data; in bs_real: what goes into
  * the core's scene) is, up to a bounded factor, a product of powers of the
- * fields: q = c prod f_i^p_i (docs/model.md 3 and 8; host/lib/modal.c). Its
+ * fields: q = c prod f_i^p_i (docs/model.md 3 and 8; host/lib/scene/modal.c). Its
  * logarithm is checked against the limits of the number type it is held in
  * before it is computed, so that no NaN or infinity is ever formed and then
  * blamed on a later check (a denormal thickness used to give NaN frequencies
