@@ -499,10 +499,13 @@ static const struct {
     { NULL, { MODAL_INPUTS } }, /* omega_sq, gamma, phi_sensor, shape_coef: the modal data */
 };
 
+/* The core names a field, perhaps followed by " (why)". */
 static int origin_of(const char *core_field)
 {
+    const size_t n = strcspn(core_field, " ");
     int i;
-    for (i = 0; origins[i].core_field && strcmp(origins[i].core_field, core_field); ++i)
+    for (i = 0; origins[i].core_field
+                && !(strlen(origins[i].core_field) == n && !strncmp(origins[i].core_field, core_field, n)); ++i)
         ;
     return i;
 }
