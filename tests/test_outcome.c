@@ -184,6 +184,34 @@ static void test_names_read_back(void **state)
     assert_string_equal(outcome_label(OUTCOME_SIGNATURE), "signature move");
 }
 
+/* The table (outcome_classes.h): every class a colour "#rrggbb" of its own
+ * and a rule in words, the precedences 1 .. N each once, and the class that
+ * always holds (other) tried last. */
+static void test_the_class_table_is_whole(void **state)
+{
+    int k, j, seen[OUTCOME_CLASSES + 1] = { 0 };
+    (void)state;
+    for (k = 0; k < OUTCOME_CLASSES; ++k) {
+        const char *colour = outcome_colour((outcome_class)k);
+        assert_int_equal(strlen(colour), 7);
+        assert_int_equal(colour[0], '#');
+        assert_int_equal(strspn(colour + 1, "0123456789abcdef"), 6);
+        assert_true(strlen(outcome_rule((outcome_class)k)) > 10);
+        for (j = 0; j < k; ++j)
+            assert_string_not_equal(colour, outcome_colour((outcome_class)j));
+    }
+    assert_string_equal(outcome_colour((outcome_class)OUTCOME_CLASSES), "?");
+#define SEEN(id, name, label, colour, precedence, rule) \
+    assert_true(precedence >= 1 && precedence <= OUTCOME_CLASSES && !seen[precedence]++);
+    OUTCOME_CLASS_TABLE(SEEN)
+#undef SEEN
+#define LAST(id, name, label, colour, precedence, rule) \
+    if (OUTCOME_##id == OUTCOME_OTHER)                   \
+        assert_int_equal(precedence, OUTCOME_CLASSES);
+    OUTCOME_CLASS_TABLE(LAST)
+#undef LAST
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -194,6 +222,7 @@ int main(void)
         cmocka_unit_test(test_stop_and_fault_come_first),
         cmocka_unit_test(test_a_run_without_a_1_s_average_is_other),
         cmocka_unit_test(test_names_read_back),
+        cmocka_unit_test(test_the_class_table_is_whole),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

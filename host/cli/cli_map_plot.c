@@ -329,8 +329,6 @@ static int write_script(const char *path, const plot_cli *cli, const map_grid *g
                         const char *prefix, const char *scene, const int *has, const double *mark_x,
                         const double *mark_y, char mark_label[][160])
 {
-    static const char *const class_colour[OUTCOME_CLASSES] = { "#2ca02c", "#1f77b4", "#ff7f0e", "#b0b0b0",
-                                                               "#8c564b", "#d62728", "#e377c2" };
     char text[4400], label[160];
     FILE *out = fopen(path, "w");
     int k, failed;
@@ -364,7 +362,7 @@ static int write_script(const char *path, const plot_cli *cli, const map_grid *g
     }
     fprintf(out, "set palette maxcolors %d\nset palette defined (", OUTCOME_CLASSES);
     for (k = 0; k < OUTCOME_CLASSES; ++k)
-        fprintf(out, "%s%d '%s'", k ? ", " : "", k, class_colour[k]);
+        fprintf(out, "%s%d '%s'", k ? ", " : "", k, outcome_colour((outcome_class)k));
     fprintf(out, ")\nset cbrange [-0.5:%d.5]\nset cbtics (", OUTCOME_CLASSES - 1);
     for (k = 0; k < OUTCOME_CLASSES; ++k) {
         fprintf(out, "%s", k ? ", " : "");

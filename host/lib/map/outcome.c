@@ -8,22 +8,41 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *const names[OUTCOME_CLASSES] = {
-    "trivial", "signature", "relaxation", "self_damping", "stop", "fault", "other"
-};
-static const char *const labels[OUTCOME_CLASSES] = {
-    "trivial adaptation", "signature move", "relaxation oscillation", "self-damping", "slider at a stop",
-    "fault", "other"
-};
+/* The table's columns, by class. */
+#define OUTCOME_NAME(id, name, label, colour, precedence, rule) #name,
+#define OUTCOME_LABEL(id, name, label, colour, precedence, rule) label,
+#define OUTCOME_COLOUR(id, name, label, colour, precedence, rule) colour,
+#define OUTCOME_PRECEDENCE(id, name, label, colour, precedence, rule) precedence,
+#define OUTCOME_RULE(id, name, label, colour, precedence, rule) rule,
+static const char *const names[OUTCOME_CLASSES] = { OUTCOME_CLASS_TABLE(OUTCOME_NAME) };
+static const char *const labels[OUTCOME_CLASSES] = { OUTCOME_CLASS_TABLE(OUTCOME_LABEL) };
+static const char *const colours[OUTCOME_CLASSES] = { OUTCOME_CLASS_TABLE(OUTCOME_COLOUR) };
+static const int precedences[OUTCOME_CLASSES] = { OUTCOME_CLASS_TABLE(OUTCOME_PRECEDENCE) };
+static const char *const rules[OUTCOME_CLASSES] = { OUTCOME_CLASS_TABLE(OUTCOME_RULE) };
+
+static int is_class(outcome_class outcome)
+{
+    return outcome >= 0 && outcome < OUTCOME_CLASSES;
+}
 
 const char *outcome_name(outcome_class outcome)
 {
-    return outcome >= 0 && outcome < OUTCOME_CLASSES ? names[outcome] : "?";
+    return is_class(outcome) ? names[outcome] : "?";
 }
 
 const char *outcome_label(outcome_class outcome)
 {
-    return outcome >= 0 && outcome < OUTCOME_CLASSES ? labels[outcome] : "?";
+    return is_class(outcome) ? labels[outcome] : "?";
+}
+
+const char *outcome_colour(outcome_class outcome)
+{
+    return is_class(outcome) ? colours[outcome] : "?";
+}
+
+const char *outcome_rule(outcome_class outcome)
+{
+    return is_class(outcome) ? rules[outcome] : "?";
 }
 
 int outcome_from_name(const char *name)
@@ -142,30 +161,73 @@ static void averaged_figures(const outcome_input *in, outcome_figures *f)
     free(t_avg);
 }
 
+/* The rules of outcome_classes.h, one function a class (holds_NAME): each
+ * is asked only after every class of a higher precedence failed. */
+static int holds_fault(const outcome_input *in, const outcome_figures *f)
+{
+    (void)f;
+    return !in->completed;
+}
+
+static int holds_stop(const outcome_input *in, const outcome_figures *f)
+{
+    return in->periods > 0
+           && (fabs(f->s_last - in->stop_min) <= OUTCOME_WALK || fabs(f->s_last - in->stop_max) <= OUTCOME_WALK);
+}
+
+static int holds_relaxation(const outcome_input *in, const outcome_figures *f)
+{
+    (void)in;
+    return f->averages > 0 && f->falls >= 2;
+}
+
+static int holds_signature(const outcome_input *in, const outcome_figures *f)
+{
+    (void)in;
+    return f->averages > 0 && f->falls == 0 && f->rises >= 1 && f->first_fall > OUTCOME_WALK
+           && f->walk_back > OUTCOME_WALK;
+}
+
+static int holds_trivial(const outcome_input *in, const outcome_figures *f)
+{
+    (void)in;
+    return f->averages > 0 && f->falls == 0 && f->rises >= 1 && f->retreat < OUTCOME_WALK
+           && f->amp_last > OUTCOME_HIGH;
+}
+
+static int holds_self_damping(const outcome_input *in, const outcome_figures *f)
+{
+    (void)in;
+    return f->averages > 0 && f->amp_max < OUTCOME_LOW && f->amp_last < OUTCOME_DAMPED;
+}
+
+static int holds_other(const outcome_input *in, const outcome_figures *f)
+{
+    (void)in;
+    (void)f;
+    return 1;
+}
+
+#define OUTCOME_HOLDS(id, name, label, colour, precedence, rule) holds_##name,
+static int (*const holds[OUTCOME_CLASSES])(const outcome_input *, const outcome_figures *) = {
+    OUTCOME_CLASS_TABLE(OUTCOME_HOLDS)
+};
+
 outcome_class outcome_classify(const outcome_input *in, outcome_figures *f)
 {
+    int rank, k;
     memset(f, 0, sizeof *f);
     f->s_last = f->amp_last = (double)NAN;
     if (in->periods > 0) {
         last_window(in, f);
         averaged_figures(in, f);
     }
-    if (!in->completed)
-        f->outcome = OUTCOME_FAULT;
-    else if (in->periods > 0
-             && (fabs(f->s_last - in->stop_min) <= OUTCOME_WALK || fabs(f->s_last - in->stop_max) <= OUTCOME_WALK))
-        f->outcome = OUTCOME_STOP;
-    else if (f->averages == 0) /* too short for the rules below */
-        f->outcome = OUTCOME_OTHER;
-    else if (f->falls >= 2)
-        f->outcome = OUTCOME_RELAXATION;
-    else if (f->falls == 0 && f->rises >= 1 && f->first_fall > OUTCOME_WALK && f->walk_back > OUTCOME_WALK)
-        f->outcome = OUTCOME_SIGNATURE;
-    else if (f->falls == 0 && f->rises >= 1 && f->retreat < OUTCOME_WALK && f->amp_last > OUTCOME_HIGH)
-        f->outcome = OUTCOME_TRIVIAL;
-    else if (f->amp_max < OUTCOME_LOW && f->amp_last < OUTCOME_DAMPED)
-        f->outcome = OUTCOME_SELF_DAMPING;
-    else
-        f->outcome = OUTCOME_OTHER;
+    f->outcome = OUTCOME_OTHER;
+    for (rank = 1; rank <= OUTCOME_CLASSES; ++rank)
+        for (k = 0; k < OUTCOME_CLASSES; ++k)
+            if (precedences[k] == rank && holds[k](in, f)) {
+                f->outcome = (outcome_class)k;
+                return f->outcome;
+            }
     return f->outcome;
 }

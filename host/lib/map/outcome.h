@@ -9,7 +9,8 @@
  *   rise:  A goes above OUTCOME_HIGH (0.5 h), from the start or from below
  *          OUTCOME_LOW; fall: A goes back below OUTCOME_LOW (0.25 h);
  *          a rise and a fall are one cycle.
- * In this order, the first that holds:
+ * In this order, the first that holds (the rules are the rows of
+ * outcome_classes.h, tried by their precedence):
  *   fault                   the run stopped before t_end (a core status)
  *   slider at a stop        the mean s over the last OUTCOME_WINDOW (10 s)
  *                           lies within OUTCOME_WALK (0.005) of a clamp stop
@@ -36,6 +37,7 @@
 #define OUTCOME_H
 
 #include <stddef.h>
+#include "outcome_classes.h"
 
 #define OUTCOME_LOW 0.25     /* [h] the low branch stays below */
 #define OUTCOME_HIGH 0.5     /* [h] the high branch stays above */
@@ -44,16 +46,12 @@
 #define OUTCOME_WINDOW 10.0  /* [s] the settled figures: the run's last 10 s */
 #define OUTCOME_AVERAGE 1.0  /* [s] the moving average's window */
 
+#define OUTCOME_ENUM(id, name, label, colour, precedence, rule) OUTCOME_##id,
 typedef enum outcome_class {
-    OUTCOME_TRIVIAL = 0,
-    OUTCOME_SIGNATURE,
-    OUTCOME_RELAXATION,
-    OUTCOME_SELF_DAMPING,
-    OUTCOME_STOP,
-    OUTCOME_FAULT,
-    OUTCOME_OTHER,
+    OUTCOME_CLASS_TABLE(OUTCOME_ENUM)
     OUTCOME_CLASSES          /* the number of classes */
 } outcome_class;
+#undef OUTCOME_ENUM
 
 /* A run's per-period trajectory (run_periods_header: t, amp_h, s; t the
  * end of each period) and what the rules need besides. */
@@ -88,9 +86,13 @@ typedef struct outcome_figures {
 outcome_class outcome_classify(const outcome_input *input, outcome_figures *figures);
 
 /* The class's name in tables ("trivial", "signature", "relaxation",
- * "self_damping", "stop", "fault", "other") and in prose. */
+ * "self_damping", "stop", "fault", "other"), in prose, its colour in
+ * map-plot and its rule in words (outcome_classes.h); "?" for a value
+ * that is no class. */
 const char *outcome_name(outcome_class outcome);
 const char *outcome_label(outcome_class outcome);
+const char *outcome_colour(outcome_class outcome);
+const char *outcome_rule(outcome_class outcome);
 
 /* The class of a table name, -1 if none. */
 int outcome_from_name(const char *name);

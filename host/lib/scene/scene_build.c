@@ -456,68 +456,6 @@ static int check_start(const scene_file *file, const bs_scene *scene, char *err,
     return 0;
 }
 
-/* The INI fields a core scene field is computed from, to point at them when
- * the core refuses a value the host's own checks let through. */
-#define ORIGIN_INPUTS 8
-#define MODAL_INPUTS { "beam", "length" }, { "beam", "thickness" }, { "beam", "density" }, \
-    { "beam", "youngs_modulus" }, { "beam", "mass" }, { "clamps", "rotational_stiffness" }
-static const struct {
-    const char *core_field;
-    scene_input inputs[ORIGIN_INPUTS]; /* ends at section NULL */
-} origins[] = {
-    { "length", { { "beam", "length" } } },
-    { "shape_scale", { { "beam", "length" } } },
-    { "stop_min/stop_max", { { "slider", "slot_width" }, { "beam", "length" } } },
-    { "half_thickness", { { "beam", "thickness" } } },
-    { "corner", { { "slider", "com_offset" }, { "slider", "play_ratio" }, { "beam", "thickness" },
-                  { "slider", "slot_width" } } },
-    { "com_offset", { { "slider", "com_offset" } } },
-    { "base_accel", { { "excitation", "acceleration" } } },
-    { "frequency", { { "excitation", "frequency" } } },
-    { "phase_step_half", { { "excitation", "frequency" }, { "numerics", "dt" } } },
-    { "frequency/phase_step_half", { { "excitation", "frequency" }, { "numerics", "dt" } } },
-    { "dt", { { "numerics", "dt" } } },
-    { "mass_inv", { { "slider", "mass" } } },
-    { "inertia_inv", { { "slider", "inertia" } } },
-    { "gravity", { { "environment", "gravity" }, { "environment", "tilt" } } },
-    { "mu", { { "contact", "friction" } } },
-    { "e_n", { { "contact", "restitution" } } },
-    { "theta", { { "numerics", "theta" } } },
-    { "mode_gain", { { "numerics", "dt" }, { "numerics", "theta" }, MODAL_INPUTS } },
-    { "damping", { { "beam", "damping_ratio" }, MODAL_INPUTS } },
-    { "stretch", { MODAL_INPUTS, { "clamps", "axial_stiffness" } } },
-    { "load", { { "transducer", "load" } } },
-    { "piezo_theta", { { "transducer", "coupling" }, { "transducer", "capacitance" }, { "numerics", "dt" },
-                       { "transducer", "patch_start" }, { "transducer", "patch_end" } } },
-    { "piezo_capacitance_inv", { { "transducer", "capacitance" } } },
-    { "load_decay", { { "transducer", "resistance" }, { "transducer", "capacitance" },
-                      { "transducer", "storage_resistance" }, { "transducer", "storage_capacitance" } } },
-    { "load_gain", { { "transducer", "resistance" }, { "transducer", "capacitance" } } },
-    { "load_conductance", { { "transducer", "resistance" }, { "transducer", "storage_resistance" } } },
-    { "storage_capacitance_inv", { { "transducer", "storage_capacitance" } } },
-    { "bridge_drop", { { "transducer", "diode_drop" } } },
-    { NULL, { MODAL_INPUTS } }, /* omega_sq, gamma, phi_sensor, shape_coef: the modal data */
-};
-
-/* The core names a field, perhaps followed by " (why)". */
-static int origin_of(const char *core_field)
-{
-    const size_t n = strcspn(core_field, " ");
-    int i;
-    for (i = 0; origins[i].core_field
-                && !(strlen(origins[i].core_field) == n && !strncmp(origins[i].core_field, core_field, n)); ++i)
-        ;
-    return i;
-}
-
-static int input_count(const scene_input *inputs)
-{
-    int count;
-    for (count = 0; count < ORIGIN_INPUTS && inputs[count].section; ++count)
-        ;
-    return count;
-}
-
 /* Inputs whose combination overflows a derived quantity, found before
  * anything is computed from them (scene_limits.c). */
 static int check_extremes(const scene_file *file, char *err, size_t size)
@@ -531,8 +469,8 @@ static int check_extremes(const scene_file *file, char *err, size_t size)
  * not blamed on dt by the explicit-limit check that reads it next. */
 static int check_modal_results(const scene_file *file, const modal_set *modes, char *err, size_t size)
 {
-    static const scene_input inputs[] = { MODAL_INPUTS, { "clamps", "axial_stiffness" } };
-    const int count = (int)(sizeof inputs / sizeof inputs[0]);
+    scene_input inputs[2 * SCENE_ORIGIN_FACTORS];
+    const int count = scene_origin_inputs("modal", inputs, (int)(sizeof inputs / sizeof inputs[0]));
     char where[SCENE_PATH + 16];
     int k, j;
     int finite = isfinite(modes->k_axial_total);
@@ -635,21 +573,20 @@ static int check_stop_rounding(const scene_file *file, const bs_scene *scene, ch
 static void report_core_refusal(const scene_file *file, bs_status status, const char *field, char *err,
                                 size_t size)
 {
-    const int origin = origin_of(field);
-    const int count = input_count(origins[origin].inputs);
+    scene_input inputs[3 * SCENE_ORIGIN_FACTORS];
+    const int count = scene_origin_inputs(field, inputs, (int)(sizeof inputs / sizeof inputs[0]));
     char where[SCENE_PATH + 16];
 
     if (!BS_WITH_PIEZO && strcmp(field, "load") == 0) {
         snprintf(err, size, "%s: this beamslider is built without the transducer (BS_WITH_PIEZO 0): "
-                 "[transducer] load must be none", scene_limits_blame(file, origins[origin].inputs, count, where,
-                                                                      sizeof where));
+                 "[transducer] load must be none", scene_limits_blame(file, inputs, count, where, sizeof where));
         return;
     }
-    snprintf(err, size, "%s: the core refuses the scene: %s (field %s): the values are too extreme for %s; "
+    snprintf(err, size, "%s: the core refuses the scene: %s (field %.*s): the values are too extreme for %s; "
              "allowed, each with the others as set: ",
-             scene_limits_blame(file, origins[origin].inputs, count, where, sizeof where), bs_status_text(status),
-             field, BS_REAL_NAME);
-    scene_limits_describe(file, origins[origin].inputs, count, err, size);
+             scene_limits_blame(file, inputs, count, where, sizeof where), bs_status_text(status),
+             (int)strcspn(field, " "), field, BS_REAL_NAME);
+    scene_limits_describe(file, inputs, count, err, size);
 }
 
 int scene_build(const scene_file *file, bs_scene *scene, scene_model *model, char *err, size_t size)

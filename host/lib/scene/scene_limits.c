@@ -23,105 +23,12 @@
 #include <stdio.h>
 #include <string.h>
 #include "beamslider.h"
+#include "scene_origins.h"
 
-#define MAX_FACTORS 6
 #define PI 3.14159265358979323846
 #define MARGIN 4.0
 
-typedef struct factor {
-    const char *section, *key;
-    double power;
-} factor;
-
-/* Where the quantity is held, which sets its limits. */
-typedef enum holder { IN_DOUBLE, IN_CORE, PHASE_STEP, MODE_GAIN } holder;
-typedef enum bound { BELOW = 1, ABOVE = 2, BOTH = 3 } bound; /* which limits apply */
-typedef enum condition {
-    ALWAYS, IF_ROTATION, IF_IMPLICIT, IF_AXIAL_STRETCH, IF_BEAM_STRETCH, IF_TRANSDUCER, IF_RESISTOR, IF_RECTIFIER
-} condition;
-typedef enum constant {
-    K_ONE, K_HALF, K_TWO, K_FOUR, K_TWELFTH, K_TWELVE, K_OMEGA_SQ, K_DAMPING, K_SLOPE, K_STRETCH,
-    K_PIECES, K_GAIN
-} constant;
-
-typedef struct derived {
-    const char *what;
-    holder held;
-    bound bounds;
-    condition when;
-    constant c;
-    factor factors[MAX_FACTORS]; /* ends at section NULL */
-} derived;
-
-#define LENGTH(p) { "beam", "length", p }
-#define THICKNESS(p) { "beam", "thickness", p }
-#define DENSITY(p) { "beam", "density", p }
-#define YOUNG(p) { "beam", "youngs_modulus", p }
-#define BEAM_MASS(p) { "beam", "mass", p }
-
-static const derived quantities[] = {
-    /* the host's modal analysis, in double (modal.c) */
-    { "density thickness length (in the beam width)", IN_DOUBLE, BOTH, ALWAYS, K_ONE,
-      { DENSITY(1), THICKNESS(1), LENGTH(1) } },
-    { "the beam width b = mass / (density thickness length)", IN_DOUBLE, BOTH, ALWAYS, K_ONE,
-      { BEAM_MASS(1), DENSITY(-1), THICKNESS(-1), LENGTH(-1) } },
-    { "E b (in the bending stiffness)", IN_DOUBLE, BOTH, ALWAYS, K_ONE,
-      { YOUNG(1), BEAM_MASS(1), DENSITY(-1), THICKNESS(-1), LENGTH(-1) } },
-    { "thickness^3 (in the bending stiffness)", IN_DOUBLE, BOTH, ALWAYS, K_ONE, { THICKNESS(3) } },
-    { "the bending stiffness EI = E b h^3 / 12", IN_DOUBLE, BOTH, ALWAYS, K_TWELFTH,
-      { YOUNG(1), BEAM_MASS(1), THICKNESS(2), DENSITY(-1), LENGTH(-1) } },
-    { "k_r L (in kappa)", IN_DOUBLE, ABOVE, ALWAYS, K_ONE, { { "clamps", "rotational_stiffness", 1 }, LENGTH(1) } },
-    { "the clamp stiffness kappa = k_r L / EI", IN_DOUBLE, ABOVE, ALWAYS, K_TWELVE,
-      { { "clamps", "rotational_stiffness", 1 }, LENGTH(2), DENSITY(1), YOUNG(-1), BEAM_MASS(-1), THICKNESS(-2) } },
-    { "mass length^3 (in the modal frequencies)", IN_DOUBLE, BOTH, ALWAYS, K_ONE, { BEAM_MASS(1), LENGTH(3) } },
-    { "the mode normalisation 1 / mass", IN_DOUBLE, BOTH, ALWAYS, K_ONE, { BEAM_MASS(-1) } },
-    { "the slope integrals I_ij ~ lambda^2 / mass", IN_DOUBLE, ABOVE, ALWAYS, K_SLOPE, { BEAM_MASS(-1) } },
-    /* what the core holds, in bs_real (scene_build.c, scene_data_round; the solver options) */
-    { "omega_k^2 = lambda_k^4 E h^2 / (12 rho L^4)", IN_CORE, BOTH, ALWAYS, K_OMEGA_SQ,
-      { YOUNG(1), THICKNESS(2), DENSITY(-1), LENGTH(-4) } },
-    { "the modal damping 2 D omega_k", IN_CORE, ABOVE, ALWAYS, K_DAMPING,
-      { { "beam", "damping_ratio", 1 }, YOUNG(0.5), THICKNESS(1), DENSITY(-0.5), LENGTH(-2) } },
-    { "the modal masses gamma_k ~ sqrt(mass)", IN_CORE, ABOVE, ALWAYS, K_ONE, { BEAM_MASS(0.5) } },
-    { "the mode shapes phi_k ~ 1 / sqrt(mass)", IN_CORE, ABOVE, ALWAYS, K_FOUR, { BEAM_MASS(-0.5) } },
-    { "the stretching matrix sqrt(k_t / 2 L^2) I_ij", IN_CORE, ABOVE, IF_AXIAL_STRETCH, K_STRETCH,
-      { { "clamps", "axial_stiffness", 0.5 }, LENGTH(-1), BEAM_MASS(-1) } },
-    { "the stretching matrix sqrt(EA / 2 L^3) I_ij", IN_CORE, ABOVE, IF_BEAM_STRETCH, K_STRETCH,
-      { YOUNG(0.5), DENSITY(-0.5), LENGTH(-2), BEAM_MASS(-0.5) } },
-    { "the beam length", IN_CORE, BOTH, ALWAYS, K_ONE, { LENGTH(1) } },
-    { "the shape table's scale pieces / L", IN_CORE, ABOVE, ALWAYS, K_PIECES, { LENGTH(-1) } },
-    { "the half thickness h / 2", IN_CORE, BOTH, ALWAYS, K_HALF, { THICKNESS(1) } },
-    { "the slot corners' B / 2", IN_CORE, BOTH, ALWAYS, K_HALF, { { "slider", "slot_width", 1 } } },
-    { "the slot corners' R / 2 = r_h h / 2", IN_CORE, ABOVE, ALWAYS, K_HALF,
-      { { "slider", "play_ratio", 1 }, THICKNESS(1) } },
-    { "the slot corners' offset d (and the start height)", IN_CORE, ABOVE, ALWAYS, K_TWO,
-      { { "slider", "com_offset", 1 } } },
-    { "1 / slider mass", IN_CORE, BOTH, ALWAYS, K_ONE, { { "slider", "mass", -1 } } },
-    { "1 / slider inertia", IN_CORE, BOTH, IF_ROTATION, K_ONE, { { "slider", "inertia", -1 } } },
-    { "gravity", IN_CORE, ABOVE, ALWAYS, K_ONE, { { "environment", "gravity", 1 } } },
-    { "the friction coefficient", IN_CORE, ABOVE, ALWAYS, K_ONE, { { "contact", "friction", 1 } } },
-    { "the base acceleration a", IN_CORE, ABOVE, ALWAYS, K_ONE, { { "excitation", "acceleration", 1 } } },
-    { "the excitation frequency", IN_CORE, BOTH, ALWAYS, K_ONE, { { "excitation", "frequency", 1 } } },
-    { "f_ex dt (the phase step f_ex dt 2^63 must not round to 0)", PHASE_STEP, BELOW, ALWAYS, K_ONE,
-      { { "excitation", "frequency", 1 }, { "numerics", "dt", 1 } } },
-    { "the time step", IN_CORE, BOTH, ALWAYS, K_ONE, { { "numerics", "dt", 1 } } },
-    { "theta^2 dt^2 omega_N^2 (the implicit step's mode gain must not round to 0)", MODE_GAIN, ABOVE,
-      IF_IMPLICIT, K_GAIN, { { "numerics", "dt", 2 }, YOUNG(1), THICKNESS(2), DENSITY(-1), LENGTH(-4) } },
-    { "the relative tolerance of the contact solve", IN_CORE, ABOVE, ALWAYS, K_ONE,
-      { { "solver", "tol_rel", 1 } } },
-    /* the transducer's (scene_build.c, compute_transducer) */
-    { "1 / C_p, the patch's inverse capacitance", IN_CORE, BOTH, IF_TRANSDUCER, K_ONE,
-      { { "transducer", "capacitance", -1 } } },
-    { "the load's conductance 1 / R", IN_CORE, BOTH, IF_RESISTOR, K_ONE, { { "transducer", "resistance", -1 } } },
-    { "the storage's conductance 1 / R_s", IN_CORE, BOTH, IF_RECTIFIER, K_ONE,
-      { { "transducer", "storage_resistance", -1 } } },
-    { "1 / C_s, the storage's inverse capacitance", IN_CORE, BOTH, IF_RECTIFIER, K_ONE,
-      { { "transducer", "storage_capacitance", -1 } } },
-    { "the bridge's drop 2 V_d", IN_CORE, ABOVE, IF_RECTIFIER, K_TWO, { { "transducer", "diode_drop", 1 } } },
-    { "the absolute tolerance of the contact solve", IN_CORE, ABOVE, ALWAYS, K_ONE,
-      { { "solver", "tol_abs", 1 } } },
-};
-
-#define QUANTITIES ((int)(sizeof quantities / sizeof quantities[0]))
+typedef scene_origin derived;
 
 static const field_spec *spec_of(const char *section, const char *key)
 {
@@ -139,47 +46,49 @@ static double value_of(const scene_params *p, const char *section, const char *k
 }
 
 /* log of c; upper: the c of the upper limit (lambda_N), else of the lower (lambda_1). */
-static double log_constant(constant c, const scene_params *p, int upper)
+static double log_constant(origin_constant c, const scene_params *p, int upper)
 {
     const double lambda = upper ? (p->modes + 1) * PI : PI;
     switch (c) {
-    case K_ONE: return 0.0;
-    case K_HALF: return log(0.5);
-    case K_TWO: return log(2.0);
-    case K_FOUR: return log(4.0);
-    case K_TWELFTH: return -log(12.0);
-    case K_TWELVE: return log(12.0);
-    case K_OMEGA_SQ: return 4.0 * log(lambda) - log(12.0);
-    case K_DAMPING: return log(2.0) + 2.0 * log(lambda) - 0.5 * log(12.0);
-    case K_SLOPE: return log(2.0) + 2.0 * log(lambda);
-    case K_STRETCH: return 0.5 * log(2.0) + 2.0 * log(lambda);
-    case K_PIECES: return log((double)BS_SHAPE_MAX_PIECES);
-    case K_GAIN: return log(2.0) + 2.0 * log(p->theta) + 4.0 * log(lambda) - log(12.0);
+    case ORIGIN_K_ONE: return 0.0;
+    case ORIGIN_K_HALF: return log(0.5);
+    case ORIGIN_K_TWO: return log(2.0);
+    case ORIGIN_K_FOUR: return log(4.0);
+    case ORIGIN_K_TWELFTH: return -log(12.0);
+    case ORIGIN_K_TWELVE: return log(12.0);
+    case ORIGIN_K_OMEGA_SQ: return 4.0 * log(lambda) - log(12.0);
+    case ORIGIN_K_DAMPING: return log(2.0) + 2.0 * log(lambda) - 0.5 * log(12.0);
+    case ORIGIN_K_SLOPE: return log(2.0) + 2.0 * log(lambda);
+    case ORIGIN_K_STRETCH: return 0.5 * log(2.0) + 2.0 * log(lambda);
+    case ORIGIN_K_PIECES: return log((double)BS_SHAPE_MAX_PIECES);
+    case ORIGIN_K_GAIN: return log(2.0) + 2.0 * log(p->theta) + 4.0 * log(lambda) - log(12.0);
     }
     return 0.0;
 }
 
-static void log_limits(holder held, double *low, double *high)
+static void log_limits(origin_holder held, double *low, double *high)
 {
     const double real_min = BS_REAL_FLOAT ? (double)FLT_MIN : DBL_MIN;
     const double real_max = BS_REAL_FLOAT ? (double)FLT_MAX : DBL_MAX;
     *low = -HUGE_VAL;
     *high = HUGE_VAL;
     switch (held) {
-    case IN_DOUBLE: *low = log(DBL_MIN * MARGIN); *high = log(DBL_MAX / MARGIN); return;
-    case IN_CORE: *low = log(real_min * MARGIN); *high = log(real_max / MARGIN); return;
-    case PHASE_STEP: *low = log(ldexp(1.0, -63)); *high = HUGE_VAL; return;
-    case MODE_GAIN: *low = -HUGE_VAL; *high = -log(real_min * MARGIN); return;
+    case ORIGIN_UNCHECKED: return;
+    case ORIGIN_IN_DOUBLE: *low = log(DBL_MIN * MARGIN); *high = log(DBL_MAX / MARGIN); return;
+    case ORIGIN_IN_CORE: *low = log(real_min * MARGIN); *high = log(real_max / MARGIN); return;
+    case ORIGIN_PHASE_STEP: *low = log(ldexp(1.0, -63)); *high = HUGE_VAL; return;
+    case ORIGIN_MODE_GAIN: *low = -HUGE_VAL; *high = -log(real_min * MARGIN); return;
     }
 }
 
-static const char *holder_text(holder held)
+static const char *holder_text(origin_holder held)
 {
     switch (held) {
-    case IN_DOUBLE: return "the host computes it in double";
-    case IN_CORE: return BS_REAL_FLOAT ? "the core holds it in float" : "the core holds it in double";
-    case PHASE_STEP: return "the phase counts 2^-64 of a period";
-    case MODE_GAIN: return BS_REAL_FLOAT ? "1 / the mode gain, in float" : "1 / the mode gain, in double";
+    case ORIGIN_UNCHECKED: return "";
+    case ORIGIN_IN_DOUBLE: return "the host computes it in double";
+    case ORIGIN_IN_CORE: return BS_REAL_FLOAT ? "the core holds it in float" : "the core holds it in double";
+    case ORIGIN_PHASE_STEP: return "the phase counts 2^-64 of a period";
+    case ORIGIN_MODE_GAIN: return BS_REAL_FLOAT ? "1 / the mode gain, in float" : "1 / the mode gain, in double";
     }
     return "";
 }
@@ -190,15 +99,17 @@ static int applies(const derived *d, const scene_params *p)
 {
     const double log_beam_axial = log(p->beam.youngs_modulus) + log(p->beam.mass) - log(p->beam.density)
                                   - 2.0 * log(p->beam.length);
+    if (d->held == ORIGIN_UNCHECKED) /* a row that only names inputs */
+        return 0;
     switch (d->when) {
-    case ALWAYS: return 1;
-    case IF_ROTATION: return p->rotation;
-    case IF_IMPLICIT: return p->implicit;
-    case IF_AXIAL_STRETCH: return p->stretching && log(p->beam.k_axial) <= log_beam_axial;
-    case IF_BEAM_STRETCH: return p->stretching && log(p->beam.k_axial) > log_beam_axial;
-    case IF_TRANSDUCER: return p->load != SCENE_LOAD_NONE;
-    case IF_RESISTOR: return p->load == SCENE_LOAD_RESISTOR;
-    case IF_RECTIFIER: return p->load == SCENE_LOAD_RECTIFIER;
+    case ORIGIN_ALWAYS: return 1;
+    case ORIGIN_IF_ROTATION: return p->rotation;
+    case ORIGIN_IF_IMPLICIT: return p->implicit;
+    case ORIGIN_IF_AXIAL_STRETCH: return p->stretching && log(p->beam.k_axial) <= log_beam_axial;
+    case ORIGIN_IF_BEAM_STRETCH: return p->stretching && log(p->beam.k_axial) > log_beam_axial;
+    case ORIGIN_IF_TRANSDUCER: return p->load != SCENE_LOAD_NONE;
+    case ORIGIN_IF_RESISTOR: return p->load == SCENE_LOAD_RESISTOR;
+    case ORIGIN_IF_RECTIFIER: return p->load == SCENE_LOAD_RECTIFIER;
     }
     return 0;
 }
@@ -209,7 +120,7 @@ static int log_product(const derived *d, const scene_params *p, int skip, double
 {
     int i;
     *sum = 0.0;
-    for (i = 0; i < MAX_FACTORS && d->factors[i].section; ++i) {
+    for (i = 0; i < SCENE_ORIGIN_FACTORS && d->factors[i].section; ++i) {
         const double value = fabs(value_of(p, d->factors[i].section, d->factors[i].key));
         if (i == skip)
             continue;
@@ -229,12 +140,12 @@ static int check_quantity(const derived *d, const scene_params *p, int *above, d
         return 0;
     log_limits(d->held, &low, &high);
     *log_q = log_constant(d->c, p, 1) + sum;
-    if ((d->bounds & ABOVE) && *log_q > high) {
+    if ((d->bounds & ORIGIN_ABOVE) && *log_q > high) {
         *above = 1;
         return -1;
     }
     *log_q = log_constant(d->c, p, 0) + sum;
-    if ((d->bounds & BELOW) && *log_q < low) {
+    if ((d->bounds & ORIGIN_BELOW) && *log_q < low) {
         *above = 0;
         return -1;
     }
@@ -250,14 +161,14 @@ static void narrow(const derived *d, const scene_params *p, int factor_index, do
     if (!applies(d, p) || log_product(d, p, factor_index, &rest) != 0)
         return;
     log_limits(d->held, &low, &high);
-    if (d->bounds & ABOVE) { /* power log x + c + rest <= high */
+    if (d->bounds & ORIGIN_ABOVE) { /* power log x + c + rest <= high */
         const double edge = (high - log_constant(d->c, p, 1) - rest) / power;
         if (power > 0.0 && edge < *log_high)
             *log_high = edge;
         if (power < 0.0 && edge > *log_low)
             *log_low = edge;
     }
-    if (d->bounds & BELOW) { /* power log x + c + rest >= low */
+    if (d->bounds & ORIGIN_BELOW) { /* power log x + c + rest >= low */
         const double edge = (low - log_constant(d->c, p, 0) - rest) / power;
         if (power > 0.0 && edge > *log_low)
             *log_low = edge;
@@ -275,10 +186,10 @@ int scene_limits_range(const scene_file *file, const char *section, const char *
 
     if (!f)
         return -1;
-    for (i = 0; i < QUANTITIES; ++i)
-        for (j = 0; j < MAX_FACTORS && quantities[i].factors[j].section; ++j)
-            if (!strcmp(quantities[i].factors[j].section, section) && !strcmp(quantities[i].factors[j].key, key))
-                narrow(&quantities[i], &file->params, j, &log_low, &log_high);
+    for (i = 0; i < scene_origin_count; ++i)
+        for (j = 0; j < SCENE_ORIGIN_FACTORS && scene_origins[i].factors[j].section; ++j)
+            if (!strcmp(scene_origins[i].factors[j].section, section) && !strcmp(scene_origins[i].factors[j].key, key))
+                narrow(&scene_origins[i], &file->params, j, &log_low, &log_high);
     *low = f->low;
     *high = f->high;
     if (f->low < 0.0) { /* a signed field (com_offset): the limits bound |x| */
@@ -389,9 +300,9 @@ const char *scene_limits_blame(const scene_file *file, const scene_input *inputs
  * first: the likely culprit. Returns their count. */
 static int inputs_of(const derived *d, const scene_params *p, scene_input *inputs)
 {
-    double weight[MAX_FACTORS];
+    double weight[SCENE_ORIGIN_FACTORS];
     int count, i;
-    for (count = 0; count < MAX_FACTORS && d->factors[count].section; ++count) {
+    for (count = 0; count < SCENE_ORIGIN_FACTORS && d->factors[count].section; ++count) {
         inputs[count].section = d->factors[count].section;
         inputs[count].key = d->factors[count].key;
         weight[count] = fabs(d->factors[count].power * log10(fabs(value_of(p, inputs[count].section, inputs[count].key))));
@@ -420,7 +331,7 @@ static void estimate_text(double log_q, char *out, size_t size)
 
 static void report(const scene_file *file, const derived *d, int above, double log_q, char *err, size_t size)
 {
-    scene_input inputs[MAX_FACTORS];
+    scene_input inputs[SCENE_ORIGIN_FACTORS];
     const int count = inputs_of(d, &file->params, inputs);
     char where[SCENE_PATH + 16], estimate[40], limit[40];
     double low, high;
@@ -438,9 +349,9 @@ int scene_limits_check(const scene_file *file, char *err, size_t size)
 {
     int i, above = 0;
     double log_q = 0.0;
-    for (i = 0; i < QUANTITIES; ++i)
-        if (check_quantity(&quantities[i], &file->params, &above, &log_q) != 0) {
-            report(file, &quantities[i], above, log_q, err, size);
+    for (i = 0; i < scene_origin_count; ++i)
+        if (check_quantity(&scene_origins[i], &file->params, &above, &log_q) != 0) {
+            report(file, &scene_origins[i], above, log_q, err, size);
             return -1;
         }
     return 0;

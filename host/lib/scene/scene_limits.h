@@ -5,18 +5,15 @@
  * frequency, a base displacement) overflow or underflow in double on the
  * host, or in bs_real in the core. scene_limits_check finds that before the
  * quantity is computed, and names the input fields with where they were set
- * and the range each may take with the others as set.
+ * and the range each may take with the others as set. The quantities, their
+ * inputs and limits are the rows of scene_origins.h.
  */
 #ifndef SCENE_LIMITS_H
 #define SCENE_LIMITS_H
 
 #include <stddef.h>
 #include "scene_ini.h"
-
-/* One input field of a derived quantity. */
-typedef struct scene_input {
-    const char *section, *key;
-} scene_input;
+#include "scene_origins.h"
 
 /* Checks every derived quantity of file->params the host computes in double
  * or hands to the core in bs_real. Returns 0, or -1 with a message in err
