@@ -61,14 +61,14 @@ static void test_a_monotone_walk_to_the_high_branch_is_trivial(void **state)
     assert_int_equal(f.rises, 1);
     assert_int_equal(f.falls, 0);
     assert_true(f.retreat < 1e-9);
-    assert_close("amp_last", f.amp_last, 0.9, 1e-12, 0.0);
+    assert_close("amp_settled", f.amp_settled, 0.9, 1e-12, 0.0);
     /* mean s over the periods that end in the last 10 s: [50, 60] */
     {
         double mean = 0.0;
         int i, n = 0;
         for (i = 4999; i < 6000; ++i, ++n)
             mean += walking_up((double)(i + 1) / RATE);
-        assert_close("s_last", f.s_last, mean / n, 1e-12, 0.0);
+        assert_close("s_settled", f.s_settled, mean / n, 1e-12, 0.0);
     }
     /* a retreat of about 0.01 against the walk: not one way only */
     in = make(60.0, rising_amp, walking_up_with_retreat, 0.3);
@@ -127,7 +127,7 @@ static void test_a_tiny_dying_amplitude_is_self_damping(void **state)
     (void)state;
     assert_int_equal(classify(&in, &f), OUTCOME_SELF_DAMPING);
     assert_true(f.amp_max < OUTCOME_LOW);
-    assert_true(f.amp_last < OUTCOME_DAMPED);
+    assert_true(f.amp_settled < OUTCOME_DAMPED);
     /* low, but not dying below 0.05 h */
     in = make(60.0, low_amp, drifting_down, 0.3);
     assert_int_equal(classify(&in, &f), OUTCOME_OTHER);
@@ -155,7 +155,7 @@ static void test_stop_and_fault_come_first(void **state)
     assert_int_equal(classify(&in, &f), OUTCOME_FAULT);
     in.periods = 0;
     assert_int_equal(classify(&in, &f), OUTCOME_FAULT);
-    assert_true(isnan(f.s_last));
+    assert_true(isnan(f.s_settled));
 }
 
 static double tiny_amp(double time) { (void)time; return 0.01; }

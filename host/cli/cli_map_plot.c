@@ -5,7 +5,7 @@
  * Writes PREFIX.dat (the grid, one line per point, NaN where a class or a
  * number is missing) and PREFIX.gp (the gnuplot script, kept so that a
  * figure can be restyled by hand), then runs gnuplot on it: PREFIX_outcome,
- * _agreement, _s_final, _s_spread, _amp_h and, when the scene has a
+ * _agreement, _s_settled, _s_spread, _amp_h and, when the scene has a
  * transducer, _power (.png). Cells are grid indices, so that a list of
  * values as uneven as 1,2,5,10 still gives equal cells; the tics name the
  * values. Fields varied beyond the two plotted are fixed with --at.
@@ -49,7 +49,7 @@ const char cli_map_plot_help[] =
 #define MAX_MARKS 16
 
 /* One value per cell and figure. */
-enum { FIG_OUTCOME, FIG_AGREEMENT, FIG_S, FIG_SPREAD, FIG_AMP, FIG_POWER, FIGURES };
+enum { FIG_OUTCOME, FIG_AGREEMENT, FIG_S, FIG_SPREAD, FIG_AMP, FIG_POWER, FIG_WINDOW, FIGURES };
 
 typedef struct plot_cli {
     const char *dir, *x, *y, *prefix, *title;
@@ -205,10 +205,11 @@ static int read_table(const char *dir, const map_grid *grid, int vx, int vy, con
                + map_point_value(grid, figures.point, vx);
         cells[cell * FIGURES + FIG_OUTCOME] = figures.outcome;
         cells[cell * FIGURES + FIG_AGREEMENT] = figures.agreement;
-        cells[cell * FIGURES + FIG_S] = figures.s_final_mean;
-        cells[cell * FIGURES + FIG_SPREAD] = figures.s_final_sd;
+        cells[cell * FIGURES + FIG_S] = figures.s_settled_mean;
+        cells[cell * FIGURES + FIG_SPREAD] = figures.s_settled_sd;
         cells[cell * FIGURES + FIG_AMP] = figures.amp_h_mean;
         cells[cell * FIGURES + FIG_POWER] = figures.power_w_mean;
+        cells[cell * FIGURES + FIG_WINDOW] = figures.window_s;
     }
     if (!failed && ferror(in)) {
         cli_error("%s: %s", path, strerror(errno));
@@ -232,6 +233,28 @@ static int read_table(const char *dir, const map_grid *grid, int vx, int vy, con
         return -1;
     }
     return 0;
+}
+
+/* The settled window the plotted runs had, for the titles: "last 10 s",
+ * "last 2 s" (a map of 2 s runs), "last 2 to 10 s" when the runs differ
+ * (a varied t_end); "settled window" when no run completed. */
+static void window_text(const double *cells, size_t n_cells, char *out, size_t size)
+{
+    double low = HUGE_VAL, high = -HUGE_VAL;
+    size_t c;
+    for (c = 0; c < n_cells; ++c) {
+        const double w = cells[c * FIGURES + FIG_WINDOW];
+        if (isfinite(w)) {
+            low = fmin(low, w);
+            high = fmax(high, w);
+        }
+    }
+    if (!(low <= high))
+        snprintf(out, size, "settled window");
+    else if (low == high)
+        snprintf(out, size, "last %.3g s", low);
+    else
+        snprintf(out, size, "last %.3g to %.3g s", low, high);
 }
 
 static void write_figure(FILE *gp, const char *prefix, const char *name, const char *title, int column,
@@ -327,7 +350,7 @@ static int run_gnuplot(const char *program, const char *script)
 /* Writes the script to path: every text through the gnuplot writer. 0, or -1. */
 static int write_script(const char *path, const plot_cli *cli, const map_grid *grid, int vx, int vy,
                         const char *prefix, const char *scene, const int *has, const double *mark_x,
-                        const double *mark_y, char mark_label[][160])
+                        const double *mark_y, char mark_label[][160], const char *window)
 {
     char text[4400], label[160];
     FILE *out = fopen(path, "w");
@@ -377,19 +400,20 @@ static int write_script(const char *path, const plot_cli *cli, const map_grid *g
     write_figure(out, prefix, "agreement", "agreement: the fraction of the starts in that class", 4, scene,
                  grid->repeat, cli->mark_count > 0);
     fprintf(out, "set cbrange [*:*]\nset cblabel 's = x_C / L'\n");
-    write_figure(out, prefix, "s_final", "final position s_final: last 10 s, mean of the starts", 5, scene,
-                 grid->repeat, cli->mark_count > 0);
-    fprintf(out, "set cblabel 'standard deviation of s_final'\n");
-    if (has[FIG_SPREAD])
-        write_figure(out, prefix, "s_spread", "spread of s_final: standard deviation over the starts", 6, scene,
-                     grid->repeat, cli->mark_count > 0);
+    snprintf(text, sizeof text, "settled position s_settled: mean s over the %s, mean of the starts", window);
+    write_figure(out, prefix, "s_settled", text, 5, scene, grid->repeat, cli->mark_count > 0);
+    fprintf(out, "set cblabel 'standard deviation of s_settled'\n");
+    if (has[FIG_SPREAD]) {
+        snprintf(text, sizeof text, "spread of s_settled (the %s): standard deviation over the starts", window);
+        write_figure(out, prefix, "s_spread", text, 6, scene, grid->repeat, cli->mark_count > 0);
+    }
     fprintf(out, "set cblabel 'w(4L/7) / h'\n");
-    write_figure(out, prefix, "amp_h", "settled amplitude amp_h: last 10 s, mean of the starts", 7, scene,
-                 grid->repeat, cli->mark_count > 0);
+    snprintf(text, sizeof text, "settled amplitude amp_h: the %s, mean of the starts", window);
+    write_figure(out, prefix, "amp_h", text, 7, scene, grid->repeat, cli->mark_count > 0);
     if (has[FIG_POWER]) {
         fprintf(out, "set cblabel 'W'\n");
-        write_figure(out, prefix, "power", "harvested power: last 10 s, mean of the starts", 8, scene,
-                     grid->repeat, cli->mark_count > 0);
+        snprintf(text, sizeof text, "harvested power: the %s, mean of the starts", window);
+        write_figure(out, prefix, "power", text, 8, scene, grid->repeat, cli->mark_count > 0);
     }
     failed = ferror(out) != 0;
     failed |= fclose(out) != 0;
@@ -405,7 +429,7 @@ static int write_grid(const char *path, const map_grid *grid, int vx, int vy, co
     int ix, iy, k, failed;
     if (!out)
         return -1;
-    fprintf(out, "# ix iy outcome agreement s_final_mean s_final_sd amp_h_mean power_w_mean\n");
+    fprintf(out, "# ix iy outcome agreement s_settled_mean s_settled_sd amp_h_mean power_w_mean window_s\n");
     for (iy = 0; iy < grid->vary[vy].count; ++iy) {
         for (ix = 0; ix < grid->vary[vx].count; ++ix) {
             const double *cell = cells + ((size_t)iy * (size_t)grid->vary[vx].count + (size_t)ix) * FIGURES;
@@ -442,7 +466,7 @@ int cli_map_plot(int argc, char **argv)
 {
     plot_cli cli;
     map_grid grid;
-    char err[2048], scene[SCENE_TEXT], prefix[4200], path[4300], gnuplot[4200];
+    char err[2048], scene[SCENE_TEXT], prefix[4200], path[4300], gnuplot[4200], window[64];
     int at_index[MAP_MAX_VARY];
     double mark_x[MAX_MARKS], mark_y[MAX_MARKS];
     char mark_label[MAX_MARKS][160];
@@ -545,13 +569,14 @@ int cli_map_plot(int argc, char **argv)
         goto done;
     }
     snprintf(path, sizeof path, "%s.gp", prefix);
-    if (write_script(path, &cli, &grid, vx, vy, prefix, scene, has, mark_x, mark_y, mark_label) != 0) {
+    window_text(cells, n_cells, window, sizeof window);
+    if (write_script(path, &cli, &grid, vx, vy, prefix, scene, has, mark_x, mark_y, mark_label, window) != 0) {
         cli_error("cannot write %s: %s", path, strerror(errno));
         goto done;
     }
     if (run_gnuplot(gnuplot, path) != 0)
         goto done;
-    fprintf(stderr, "map-plot: wrote %s_{outcome,agreement,s_final%s,amp_h%s}.png\n", prefix,
+    fprintf(stderr, "map-plot: wrote %s_{outcome,agreement,s_settled%s,amp_h%s}.png\n", prefix,
             has[FIG_SPREAD] ? ",s_spread" : "", has[FIG_POWER] ? ",power" : "");
     status = CLI_OK;
 done:

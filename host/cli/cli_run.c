@@ -22,7 +22,7 @@ const char cli_run_help[] =
     "  simulate: CSV rows, one row per excitation period, a JSON summary on stdout\n"
     "  CSV rows every N steps (--out: t, w_sensor, s, z_r, beta, contacts, pgs_iters,\n"
     "  pgs_residual; v, p, v_s with a transducer), one row per excitation period with --periods\n"
-    "  (t, amp_h, s, ds), JSON summary on stdout (s_final: s at t_end; README.md, \"Names\").\n"
+    "  (t, amp_h, s, ds), JSON summary on stdout (s_final: s at t_end; README.md).\n"
     "  --model, --s0, --t-end, --dt and --pgs-iters set [run] model, s0, t_end, [numerics] dt and\n"
     "  [solver] max_sweeps; --set any field (beamslider fields lists them). --excitation: the base\n"
     "  follows a recorded acceleration (CSV or WAV; --scale: m/s^2 at full scale, --channel: from\n"

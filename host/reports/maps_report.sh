@@ -41,7 +41,7 @@ $command >"$DIR-run-$(date +%Y%m%d-%H%M%S).json"
 set --
 for mark in $MARKS; do set -- "$@" --mark "$mark"; done
 "$BIN" map-plot "$DIR" --out "$DIR-plot" --title "validated set (fig6.ini), 120 s from s0 = 0.3" "$@"
-for figure in outcome agreement s_final s_spread amp_h; do
+for figure in outcome agreement s_settled s_spread amp_h; do
     cp "$DIR-plot_$figure.png" "$FIG/map_$figure.png"
 done
 
@@ -98,7 +98,7 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
     echo "The papers' scenarios on the map (the point's 3 starts). fig12b, fig12a's excitation from s0 = 0.4,"
     echo "is not on it: the map starts every run at 0.3 (tests/check_map.sh classifies fig12b from its own start)."
     echo
-    echo "| scenario | f_ex [Hz] | a [m/s^2] | paper | map: class (agreement) | fractions $(echo $CLASSES | tr ' ' '/') | s_final mean (sd) | amp_h mean [h] |"
+    echo "| scenario | f_ex [Hz] | a [m/s^2] | paper | map: class (agreement) | fractions $(echo $CLASSES | tr ' ' '/') | s_settled mean (sd) | amp_h mean [h] |"
     echo "|---|---|---|---|---|---|---|---|"
     for pair in $LABELS; do
         scene=${pair%%:*}
@@ -110,7 +110,7 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
                 fractions = ""
                 for (i = 1; i <= count; i++) fractions = fractions (i > 1 ? "/" : "") $c["frac_" order[i]]
                 printf "| %s | %s | %s | %s | %s (%s) | %s | %s (%s) | %s |\n", scene, f, a, want,
-                    $c["outcome"], $c["agreement"], fractions, $c["s_final_mean"], $c["s_final_sd"], $c["amp_h_mean"]
+                    $c["outcome"], $c["agreement"], fractions, $c["s_settled_mean"], $c["s_settled_sd"], $c["amp_h_mean"]
             }' "$DIR/map.csv"
     done
 } >"$DIR-numbers.md"

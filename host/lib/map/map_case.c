@@ -2,8 +2,10 @@
  *
  * The run is run_scene's, as `beamslider run` does it; its per-period rows
  * (run_periods_header) go to memory (open_memstream) and give the outcome
- * and the settled figures (outcome.h). The settled position s_final and
- * amplitude amp_h are means over the last 10 s, s_end is s at t_end.
+ * and the settled figures (outcome.h). The settled position s_settled and
+ * amplitude amp_h are means over the settled window, the run's last 10 s
+ * or the whole run if shorter (window_s says which); s_end is s at t_end
+ * (what `run` calls s_final).
  */
 #define _POSIX_C_SOURCE 200809L /* open_memstream */
 
@@ -176,6 +178,7 @@ static int run_case(const map_grid *grid, const scene_file *base, long c, case_s
     input.periods = trajectory.count;
     input.s0 = w->file.params.s0;
     input.completed = *built && result->status == BS_OK;
+    input.duration = result->t;
     outcome_classify(&input, figures);
     free_periods(&trajectory);
     return 0;
@@ -204,11 +207,12 @@ int map_case_run(const map_grid *grid, const scene_file *base, long c, char *row
         used = put(row, used, size, ",%s", grid->vary[v].values[map_point_value(grid, point, v)]);
     used = put(row, used, size, ",%.9g,%s,%s", w->file.params.s0, status_word(result.status),
                outcome_name(figures.outcome));
-    used = put_number(row, used, size, ",%.9g", figures.s_last);
+    used = put_number(row, used, size, ",%.9g", figures.s_settled);
+    used = put_number(row, used, size, ",%.6g", figures.window > 0.0 ? figures.window : (double)NAN);
     used = put_number(row, used, size, ",%.9g", built ? result.s_final : (double)NAN);
     used = put_number(row, used, size, ",%.9g", built ? result.s_min : (double)NAN);
     used = put_number(row, used, size, ",%.6f", built ? result.t_s_min : (double)NAN);
-    used = put_number(row, used, size, ",%.6g", figures.amp_last);
+    used = put_number(row, used, size, ",%.6g", figures.amp_settled);
     used = put_number(row, used, size, ",%.6g", figures.amp_max);
     used = put_number(row, used, size, ",%.6g", figures.v_last);
     used = put_number(row, used, size, ",%.6g", figures.v_peak);

@@ -17,7 +17,8 @@
 
 /* The result columns after the varied fields (docs/maps.md section 3). */
 #define MAP_RUN_COLUMNS                                                                                   \
-    "s0,status,outcome,s_final,s_end,s_min,t_s_min,amp_h,amp_max_h,v_last,v_peak,cycles,power_w,energy_j," \
+    "s0,status,outcome,s_settled,window_s,s_end,s_min,t_s_min,amp_h,amp_max_h,v_last,v_peak,cycles,power_w,"  \
+    "energy_j,"                                                                                                  \
     "steps,unconverged_steps,max_pgs_iters,max_systems,hash"
 #define MAP_ROW 2048 /* a row's characters at most, with its newline */
 

@@ -114,9 +114,9 @@ static void put(FILE *out, const char *format, double value)
 }
 
 /* The result columns of map.csv after the outcome class, in order. */
-static const char *const point_columns[] = { "s_final_mean", "s_final_sd", "s_final_min", "s_final_max",
+static const char *const point_columns[] = { "s_settled_mean", "s_settled_sd", "s_settled_min", "s_settled_max",
                                              "amp_h_mean", "amp_h_sd", "v_last_mean", "v_peak_mean",
-                                             "power_w_mean", "power_w_sd", "unconverged_steps", NULL };
+                                             "power_w_mean", "power_w_sd", "unconverged_steps", "window_s", NULL };
 
 int map_table_points_header(const map_grid *grid, char *out, size_t size)
 {
@@ -216,10 +216,11 @@ int map_table_point_parse(const map_grid *grid, long point, const char *line, ma
     }
     figures->point = point;
     figures->agreement = fraction[0];
-    figures->s_final_mean = number[0];
-    figures->s_final_sd = number[1];
+    figures->s_settled_mean = number[0];
+    figures->s_settled_sd = number[1];
     figures->amp_h_mean = number[4];
     figures->power_w_mean = number[8];
+    figures->window_s = number[11];
     return 0;
 }
 
@@ -228,7 +229,8 @@ int map_table_points(FILE *out, const map_grid *grid, char *const *row)
     const int base = 3 + grid->vary_count; /* the first result column, s0 */
     const int col_status = base + result_column("status");
     const int col_outcome = base + result_column("outcome");
-    const int col_s = base + result_column("s_final");
+    const int col_s = base + result_column("s_settled");
+    const int col_window = base + result_column("window_s");
     const int col_amp = base + result_column("amp_h");
     const int col_v = base + result_column("v_last");
     const int col_peak = base + result_column("v_peak");
@@ -243,12 +245,12 @@ int map_table_points(FILE *out, const map_grid *grid, char *const *row)
     fprintf(out, "%s\n", header);
     for (point = 0; point < grid->points; ++point) {
         int count[OUTCOME_CLASSES];
-        spread s, amp, speed, peak, power;
+        spread s, amp, speed, peak, power, window;
         double unconverged = 0.0;
         int r, most = 0;
         memset(count, 0, sizeof count);
         memset(&s, 0, sizeof s);
-        amp = speed = peak = power = s;
+        amp = speed = peak = power = window = s;
         for (r = 0; r < grid->repeat; ++r) {
             const char *text = row[point * grid->repeat + r];
             char name[32];
@@ -267,6 +269,7 @@ int map_table_points(FILE *out, const map_grid *grid, char *const *row)
             spread_add(&speed, number_at(text, col_v));
             spread_add(&peak, number_at(text, col_peak));
             spread_add(&power, number_at(text, col_power));
+            spread_add(&window, number_at(text, col_window));
         }
         for (k = 1; k < OUTCOME_CLASSES; ++k)
             if (count[k] > count[most])
@@ -288,7 +291,9 @@ int map_table_points(FILE *out, const map_grid *grid, char *const *row)
         put(out, ",%.4g", spread_mean(&peak));
         put(out, ",%.6g", spread_mean(&power));
         put(out, ",%.3g", spread_sd(&power));
-        fprintf(out, ",%.0f\n", unconverged);
+        fprintf(out, ",%.0f", unconverged);
+        put(out, ",%.6g", window.n ? window.low : (double)NAN);
+        fputc('\n', out);
     }
     return ferror(out) ? -1 : 0;
 }

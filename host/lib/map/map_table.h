@@ -6,9 +6,9 @@
  * repeats: the class most of them ended in (ties: the first in the class
  * order of outcome.h) and the fraction that did (agreement), the fraction
  * of every class, and mean, sample standard deviation, least and largest
- * s_final, mean and standard deviation of amp_h and of power_w, the mean
- * transport speeds; means over the repeats that did not fault (nan if
- * none).
+ * s_settled, mean and standard deviation of amp_h and of power_w, the mean
+ * transport speeds, the shortest settled window (window_s); means over the
+ * repeats that did not fault (nan if none).
  */
 #ifndef MAP_TABLE_H
 #define MAP_TABLE_H
@@ -38,7 +38,8 @@ typedef struct map_point_figures {
     long point;
     int outcome;                  /* outcome_class */
     double agreement;
-    double s_final_mean, s_final_sd, amp_h_mean, power_w_mean; /* NAN: none */
+    double s_settled_mean, s_settled_sd, amp_h_mean, power_w_mean; /* NAN: none */
+    double window_s;              /* the shortest settled window of its runs [s]; NAN: none */
 } map_point_figures;
 
 /* Reads line (one row of map.csv without its newline), which must be the row

@@ -54,8 +54,9 @@ int outcome_from_name(const char *name)
     return -1;
 }
 
-/* Means of amp_h and s over the periods that end within the last
- * OUTCOME_WINDOW seconds (scenario.awk's amp_last10). */
+/* Means of amp_h and s over the periods that end within the settled
+ * window, the last OUTCOME_WINDOW seconds (scenario.awk's amp_last10), or
+ * the whole run when it is shorter. */
 static void last_window(const outcome_input *in, outcome_figures *f)
 {
     const double from = in->t[in->periods - 1] - OUTCOME_WINDOW;
@@ -68,8 +69,12 @@ static void last_window(const outcome_input *in, outcome_figures *f)
             s += in->s[i];
             ++n;
         }
-    f->amp_last = amp / (double)n;
-    f->s_last = s / (double)n;
+    f->amp_settled = amp / (double)n;
+    f->s_settled = s / (double)n;
+    {
+        const double duration = in->duration > 0.0 ? in->duration : in->t[in->periods - 1];
+        f->window = duration < OUTCOME_WINDOW ? duration : OUTCOME_WINDOW;
+    }
 }
 
 /* The figures of the 1 s centred moving averages: a running window
@@ -172,7 +177,7 @@ static int holds_fault(const outcome_input *in, const outcome_figures *f)
 static int holds_stop(const outcome_input *in, const outcome_figures *f)
 {
     return in->periods > 0
-           && (fabs(f->s_last - in->stop_min) <= OUTCOME_WALK || fabs(f->s_last - in->stop_max) <= OUTCOME_WALK);
+           && (fabs(f->s_settled - in->stop_min) <= OUTCOME_WALK || fabs(f->s_settled - in->stop_max) <= OUTCOME_WALK);
 }
 
 static int holds_relaxation(const outcome_input *in, const outcome_figures *f)
@@ -192,13 +197,13 @@ static int holds_trivial(const outcome_input *in, const outcome_figures *f)
 {
     (void)in;
     return f->averages > 0 && f->falls == 0 && f->rises >= 1 && f->retreat < OUTCOME_WALK
-           && f->amp_last > OUTCOME_HIGH;
+           && f->amp_settled > OUTCOME_HIGH;
 }
 
 static int holds_self_damping(const outcome_input *in, const outcome_figures *f)
 {
     (void)in;
-    return f->averages > 0 && f->amp_max < OUTCOME_LOW && f->amp_last < OUTCOME_DAMPED;
+    return f->averages > 0 && f->amp_max < OUTCOME_LOW && f->amp_settled < OUTCOME_DAMPED;
 }
 
 static int holds_other(const outcome_input *in, const outcome_figures *f)
@@ -217,7 +222,7 @@ outcome_class outcome_classify(const outcome_input *in, outcome_figures *f)
 {
     int rank, k;
     memset(f, 0, sizeof *f);
-    f->s_last = f->amp_last = (double)NAN;
+    f->s_settled = f->amp_settled = (double)NAN;
     if (in->periods > 0) {
         last_window(in, f);
         averaged_figures(in, f);

@@ -61,13 +61,16 @@ typedef struct outcome_input {
     double s0;                /* the start */
     double stop_min, stop_max; /* the clamp stops as s (x_C / L) */
     int completed;            /* 1: the run reached t_end */
+    double duration;          /* the run's simulated time [s] (0: the last period's end) */
 } outcome_input;
 
 /* The figures the rules use, and the class. */
 typedef struct outcome_figures {
     outcome_class outcome;
-    double s_last;        /* mean s over the last 10 s (the whole run if shorter) */
-    double amp_last;      /* mean amplitude [h] over the last 10 s */
+    double s_settled;     /* mean s over the settled window */
+    double amp_settled;   /* mean amplitude [h] over the settled window */
+    double window;        /* the settled window [s]: the run's last OUTCOME_WINDOW (10 s), or the
+                             whole run if shorter (0 without a period) */
     double amp_max;       /* largest A [h] (0 when the run has no 1 s average) */
     int averages;         /* 1 s averages (periods whose window lies in the run) */
     int rises, falls;     /* of A; cycles = falls */
