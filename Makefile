@@ -5,12 +5,15 @@
 #   make test         build and run the tests, float and double (under two minutes)
 #   make test-long    the slow checks: valgrind, minute-long fuzzing, whole runs under QEMU,
 #                     a sharded map on a private single-node Slurm (as root; tests/slurm/)
-#   make lib          the core as static libraries: build/lib/libbeamslider-double.a and
-#                     -float.a (with TARGET=cortex-m4f SCENE=fig6 REAL=float: for that
-#                     target and compiled scene, build/lib/cortex-m4f/; port/lib.mk)
-#   make install [PREFIX=/usr/local] [DESTDIR=]   the library in both precisions, its
-#                     headers, pkg-config files (beamslider-double, beamslider-float),
-#                     the CMake package beamslider and the licence (make uninstall)
+#   make lib          the libraries in both precisions: build/lib/libbeamslider-double.a
+#                     and -float.a (the core), libbeamslider-host-double.a, -float.a and
+#                     .so (libbeamslider-host: host/include/beamslider_host.h) (with
+#                     TARGET=cortex-m4f SCENE=fig6 REAL=float: the core for that target
+#                     and compiled scene, build/lib/cortex-m4f/; port/lib.mk)
+#   make install [PREFIX=/usr/local] [DESTDIR=]   the libraries in both precisions,
+#                     their headers, pkg-config files (beamslider-host-double, -float,
+#                     beamslider-double, -float), the CMake package beamslider, the
+#                     beamslider program, the scenes and the licence (make uninstall)
 #   make fields       docs/fields.md: every scene field (also `beamslider fields`)
 #   make configs      regenerate the compile-time scene headers configs/*.h
 #   make test-sweeps  the contact solve's tests built with BS_WITH_SUBSPACE=0
@@ -56,12 +59,17 @@ BASE_CFLAGS := -std=c99 -ffp-contract=off -fno-math-errno $(WARNINGS)
 NO_LOOP_CALLS := $(shell $(CC) -fno-tree-loop-distribute-patterns -Werror -E -x c /dev/null >/dev/null 2>&1 \
                    && echo -fno-tree-loop-distribute-patterns)
 CORE_INC := -I$(OBJ)/include -Icore/include
-CORE_CFLAGS := $(BASE_CFLAGS) $(NO_LOOP_CALLS) $(CORE_INC) -Icore/src -Iport/host
+# Host objects are position-independent: the same objects make the CLI, the
+# tests and the installed libraries (a shared one among them; port/lib.mk).
+# -fno-semantic-interposition keeps calls within a file direct and
+# inlinable, as in a program (the library's symbols are not interposed).
+HOST_PIC := -fPIC -fno-semantic-interposition
+CORE_CFLAGS := $(BASE_CFLAGS) $(HOST_PIC) $(NO_LOOP_CALLS) $(CORE_INC) -Icore/src -Iport/host
 # The host library's wings (host/lib/README.md), each on the include path:
 # a file includes another wing's header by its name.
 HOST_WINGS := io scene run map twin api
 HOST_INC := -Ihost/include $(HOST_WINGS:%=-Ihost/lib/%)
-HOST_CFLAGS := $(BASE_CFLAGS) $(CORE_INC) -Iport -Iport/host $(HOST_INC) -Ihost/cli
+HOST_CFLAGS := $(BASE_CFLAGS) $(HOST_PIC) $(CORE_INC) -Iport -Iport/host $(HOST_INC) -Ihost/cli
 # Tests also reach the core's internal headers (core/src) to test its parts.
 TEST_CFLAGS := $(HOST_CFLAGS) -Icore/src -Itests
 
@@ -103,23 +111,31 @@ $(OBJ)/include/bs_revision.h: .force
 	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
 $(OBJ)/host/lib/scene/scene_summary.o $(OBJ)/host/lib/map/map_store.o $(OBJ)/host/cli/main.o $(OBJ)/tests/test_summary.o: $(OBJ)/include/bs_revision.h
 
+# What the objects of $(OBJ) were compiled with: a change of compiler or
+# flags (HOST_PIC, CFLAGS) rebuilds them, not only a change of sources.
+BUILD_FLAGS := $(OBJ)/build.flags
+$(BUILD_FLAGS): .force
+	@mkdir -p $(@D)
+	@printf '%s\n' '$(CC) $(CFLAGS) $(CORE_CFLAGS) $(HOST_CFLAGS)' | cmp -s - $@ \
+	    || printf '%s\n' '$(CC) $(CFLAGS) $(CORE_CFLAGS) $(HOST_CFLAGS)' > $@
+
 # (both precisions: the reference and the reports use the double one from any REAL)
 $(BUILD)/double/include/bs_build_config.h $(BUILD)/float/include/bs_build_config.h: .force
 	@sh port/build_config.sh $@ $(word 2,$(subst /, ,$(patsubst $(BUILD)/%,x/%,$@))) $(CONFIG)
 
-$(OBJ)/core/%.o: core/%.c $(wildcard core/*/*.h) port/host/bs_port.h $(CONFIG_H) | deps-build
+$(OBJ)/core/%.o: core/%.c $(wildcard core/*/*.h) port/host/bs_port.h $(CONFIG_H) $(BUILD_FLAGS) | deps-build
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(CORE_CFLAGS) -c -o $@ $<
 
-$(OBJ)/host/%.o: host/%.c $(HOST_HEADERS) $(wildcard core/include/*.h) $(CONFIG_H) | deps-build
+$(OBJ)/host/%.o: host/%.c $(HOST_HEADERS) $(wildcard core/include/*.h) $(CONFIG_H) $(BUILD_FLAGS) | deps-build
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(HOST_CFLAGS) -c -o $@ $<
 
-$(OBJ)/port/host/%.o: port/host/%.c port/bs_platform.h $(CONFIG_H) | deps-build
+$(OBJ)/port/host/%.o: port/host/%.c port/bs_platform.h $(CONFIG_H) $(BUILD_FLAGS) | deps-build
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(HOST_CFLAGS) -c -o $@ $<
 
-$(OBJ)/tests/%.o: tests/%.c $(wildcard tests/*.h core/*/*.h) $(HOST_HEADERS) $(CONFIG_H) | deps-test
+$(OBJ)/tests/%.o: tests/%.c $(wildcard tests/*.h core/*/*.h) $(HOST_HEADERS) $(CONFIG_H) $(BUILD_FLAGS) | deps-test
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(TEST_CFLAGS) -c -o $@ $<
 
