@@ -373,6 +373,15 @@ check_has "--version names the version" "$tmp/o" "beamslider $(sed -n 's/^#defin
 "$bin" fields extra >"$tmp/o" 2>"$tmp/e"
 check_status "fields with an argument exits 2" 2 $? "$tmp/e"
 
+# ---- twin: a stream shorter than --score-after says why within is null
+"$bin" twin-plant configs/fig6.ini --t-end 0.05 --out "$tmp/short.csv" >"$tmp/o" 2>"$tmp/e"
+check_status "twin-plant of 0.05 s exits 0" 0 $? "$tmp/e"
+"$bin" twin configs/fig6.ini --measured "$tmp/short.csv" --out "$tmp/short_est.csv" --map-frequencies 2000 \
+    --noise 1e-6 --score-after 5 >"$tmp/o" 2>"$tmp/e"
+check_status "twin on a stream shorter than --score-after exits 0" 0 $? "$tmp/e"
+check_has "its summary has within null and scored 0" "$tmp/o" '"scored":0,"within":null'
+check_has "and stderr says why" "$tmp/e" "no row was scored (within and rms_s_error are null): the stream ends at t = 0.05 s, before --score-after 5 s"
+
 # ---- help: each command's own, and the top-level usage lists every option
 "$bin" --help >"$tmp/usage" 2>"$tmp/e"
 check_status "--help exits 0" 0 $? "$tmp/e"
