@@ -373,5 +373,40 @@ check_has "--version names the version" "$tmp/o" "beamslider $(sed -n 's/^#defin
 "$bin" fields extra >"$tmp/o" 2>"$tmp/e"
 check_status "fields with an argument exits 2" 2 $? "$tmp/e"
 
+# ---- twin: a stream shorter than --score-after says why within is null
+"$bin" twin-plant configs/fig6.ini --t-end 0.05 --out "$tmp/short.csv" >"$tmp/o" 2>"$tmp/e"
+check_status "twin-plant of 0.05 s exits 0" 0 $? "$tmp/e"
+"$bin" twin configs/fig6.ini --measured "$tmp/short.csv" --out "$tmp/short_est.csv" --map-frequencies 2000 \
+    --noise 1e-6 --score-after 5 >"$tmp/o" 2>"$tmp/e"
+check_status "twin on a stream shorter than --score-after exits 0" 0 $? "$tmp/e"
+check_has "its summary has within null and scored 0" "$tmp/o" '"scored":0,"within":null'
+check_has "and stderr says why" "$tmp/e" "no row was scored (within and rms_s_error are null): the stream ends at t = 0.05 s, before --score-after 5 s"
+
+# ---- help: each command's own, and the top-level usage lists every option
+"$bin" --help >"$tmp/usage" 2>"$tmp/e"
+check_status "--help exits 0" 0 $? "$tmp/e"
+for command in modes gen sweep run twin twin-plant twin-gains map map-merge map-plot fields; do
+    "$bin" "$command" --help >"$tmp/o" 2>"$tmp/e"
+    status=$?
+    if [ "$status" -eq 0 ] && [ "$(head -n 1 "$tmp/o" | cut -d' ' -f1-3)" = "usage: beamslider $command" ] \
+        && ! grep -q "^usage: beamslider [a-z-]* " "$tmp/e"; then
+        pass "$command --help prints its own usage (exit 0)"
+    else
+        fail "$command --help prints its own usage (exit 0)" "exit $status: $(head -n 2 "$tmp/o") $(cat "$tmp/e")"
+    fi
+    if [ "$(grep -c '^usage: ' "$tmp/o")" -ne 1 ]; then
+        fail "$command --help prints one command's usage only" "$(grep '^usage: ' "$tmp/o")"
+    fi
+    missing=""
+    for option in $(grep -o -e '--[a-z][a-z-]*' "$tmp/o" | sort -u); do
+        grep -q -e "$option" "$tmp/usage" || missing="$missing $option"
+    done
+    if [ -z "$missing" ]; then
+        pass "beamslider --help lists every option of $command"
+    else
+        fail "beamslider --help lists every option of $command" "missing:$missing"
+    fi
+done
+
 echo "check_cli: $passed passed, $failed failed ($bin)"
 [ "$failed" -eq 0 ]

@@ -41,10 +41,10 @@ ROBUSTNESS_PACKAGES := valgrind
 # project's warning gate is the gcc build.
 FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
 FUZZ_BASE := -std=c99 -O1 -g -ffp-contract=off -fno-math-errno $(FUZZ_SAN) \
-             -Icore/include -Icore/src -Iport -Iport/host -Ihost/lib -Itests/fuzz -DFUZZ_CONFIGS='"$(CURDIR)/configs"'
+             -Icore/include -Icore/src -Iport -Iport/host $(HOST_INC) -Itests/fuzz -DFUZZ_CONFIGS='"$(CURDIR)/configs"'
 FUZZ_LIB_WARNINGS := -Wall -Wextra -Wno-double-promotion
 FUZZ_SRC := $(CORE_SRC) $(HOST_LIB_SRC)
-FUZZ_HEADERS = $(wildcard core/*/*.h host/*/*.h port/*.h port/host/*.h tests/fuzz/*.h)
+FUZZ_HEADERS = $(wildcard core/*/*.h port/*.h port/host/*.h tests/fuzz/*.h) $(HOST_HEADERS)
 # the build configuration of a precision (the host build's, Makefile)
 fuzz_real_flag = -I$(BUILD)/$1/include
 
@@ -121,7 +121,7 @@ fuzz-short-%: fuzz-build
 # source-based coverage (no sanitizers), each corpus replayed once.
 FUZZ_COV := $(BUILD)/fuzz-cov
 FUZZ_COV_FLAGS := -std=c99 -O0 -g -ffp-contract=off -fno-math-errno -fprofile-instr-generate -fcoverage-mapping \
-                  -Icore/include -Icore/src -Iport -Iport/host -Ihost/lib -Itests/fuzz -DFUZZ_CONFIGS='"$(CURDIR)/configs"' -Wno-double-promotion
+                  -Icore/include -Icore/src -Iport -Iport/host $(HOST_INC) -Itests/fuzz -DFUZZ_CONFIGS='"$(CURDIR)/configs"' -Wno-double-promotion
 fuzz-coverage: $(BUILD)/double/include/bs_build_config.h
 	@sh host/deps.sh $(FUZZ_COV_PACKAGES)
 	@mkdir -p $(FUZZ_COV)
@@ -134,7 +134,7 @@ fuzz-coverage: $(BUILD)/double/include/bs_build_config.h
 	    llvm-profdata-14 merge -sparse -o $(FUZZ_COV)/$$t.profdata $(FUZZ_COV)/$$t.profraw; \
 	    echo "== $$t: line coverage of the sources it exercises (seed + work corpus)"; \
 	    llvm-cov-14 report $(FUZZ_COV)/$$t -instr-profile=$(FUZZ_COV)/$$t.profdata \
-	        $$( [ $$t = fuzz_scene ] && echo host/lib/scene_ini.c host/lib/scene_build.c host/lib/modal.c host/lib/shape_fit.c core/src/bs_scene.c core/src/bs_sim.c \
+	        $$( [ $$t = fuzz_scene ] && echo host/lib/scene/scene_ini.c host/lib/scene/scene_build.c host/lib/scene/modal.c host/lib/scene/shape_fit.c core/src/bs_scene.c core/src/bs_sim.c \
 	                              || echo core/src/*.c ); \
 	done
 
@@ -164,7 +164,7 @@ VG_OBJ := $(BUILD)/double
 $(VG_OBJ)/tests/fuzz/vg_test_sim: tests/fuzz/vg_test_sim.c tests/test_sim.c $(VG_OBJ)/tests/support.o \
         $(HOST_LIB_SRC:%.c=$(VG_OBJ)/%.o) $(CORE_SRC:%.c=$(VG_OBJ)/%.o) | deps-test
 	@mkdir -p $(dir $@)
-	$(CC) -O2 -g $(BASE_CFLAGS) -I$(VG_OBJ)/include -Icore/include -Icore/src -Iport -Iport/host -Ihost/lib -Itests \
+	$(CC) -O2 -g $(BASE_CFLAGS) -I$(VG_OBJ)/include -Icore/include -Icore/src -Iport -Iport/host $(HOST_INC) -Itests \
 	    -o $@ tests/fuzz/vg_test_sim.c $(filter %.o,$^) $(TEST_LIBS)
 
 robustness-deps:

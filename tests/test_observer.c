@@ -1,5 +1,5 @@
 /* test_observer.c - the twin's observer (core/src/bs_observer.c) and its
- * design (host/lib/observer_design.c) on fig6: a plant (a bs_sim stepped
+ * design (host/lib/twin/observer_design.c) on fig6: a plant (a bs_sim stepped
  * under the scene's excitation) and a twin (a bs_sim stepped by the observer
  * on the plant's base acceleration and w(4L/7), with white noise 40 dB below
  * their RMS) run side by side. The thresholds are the figures of docs/twin.md

@@ -1,5 +1,5 @@
 /* test_shape.c - the core's mode shapes (core/src/bs_shape.c, in bs_real) against
- * the cancellation-free closed form in double (host/lib/modal.c).
+ * the cancellation-free closed form in double (host/lib/scene/modal.c).
  *
  * Tolerances, relative to max |phi_k| (resp. max |phi_k'|) over the beam:
  *   double: the host fit tolerance, 1e-9 (scene_fit_tolerance);

@@ -106,7 +106,12 @@ static void test_scene_check_names_the_bad_field(void **state)
     EXPECT_BAD(bad.corner[0][1] = bad.corner[1][1], BS_E_SCENE, "corner"); /* slot thinner than the beam */
     EXPECT_BAD(bad.dt = 0, BS_E_SCENE, "dt");
     EXPECT_BAD(bad.base_accel = BS_R(-1.0), BS_E_SCENE, "base_accel");
-    EXPECT_BAD(bad.phase_step_half *= 2, BS_E_SCENE, "frequency/phase_step_half"); /* not f dt / 2 */
+    EXPECT_BAD(bad.phase_step_half *= 2, BS_E_SCENE,
+               "frequency/phase_step_half (derived together with dt: for another frequency call "
+               "bs_sim_set_excitation on the sim, for another dt build the scene again)"); /* not f dt / 2 */
+    EXPECT_BAD(bad.frequency *= BS_R(1.1), BS_E_SCENE,
+               "frequency/phase_step_half (derived together with dt: for another frequency call "
+               "bs_sim_set_excitation on the sim, for another dt build the scene again)"); /* a copy's frequency */
     EXPECT_BAD((bad.dt = BS_R(1e-4), bad.phase_step_half *= 5), BS_E_UNSTABLE, "dt"); /* omega_5 dt = 2.2 */
 #undef EXPECT_BAD
     assert_int_equal(bs_scene_check(&scene, &field), BS_OK);

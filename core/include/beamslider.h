@@ -74,7 +74,16 @@ bs_status bs_build_check_(uint32_t tag, size_t sim_size, size_t scene_size);
 /* Checks every field of a scene: BS_OK, BS_E_NULL, BS_E_BUILD, BS_E_SCENE (a
  * field out of its range) or BS_E_UNSTABLE (omega_max dt >= 2). On
  * BS_E_SCENE and BS_E_UNSTABLE, *field (if field is not NULL) names the
- * offending field. */
+ * offending field.
+ *
+ * A scene's fields are derived together (frequency and dt make
+ * phase_step_half; dt makes mode_gain and the transducer's factors; the
+ * modal data come from the beam), so a changed copy of a built scene is
+ * refused: for another excitation frequency or amplitude keep the scene
+ * and call bs_sim_set_excitation on the sim (any time, the phase goes on);
+ * for another dt, or anything else, build the scene again (libbeamslider-
+ * host: bs_host_scene_load with an override such as "numerics.dt=1e-5",
+ * or bs_host_scene_set; the command line: beamslider gen). */
 #define bs_scene_check(scene, field) bs_scene_check_(BS_BUILD_TAG, sizeof(bs_scene), (scene), (field))
 bs_status bs_scene_check_(uint32_t tag, size_t scene_size, const bs_scene *scene, const char **field);
 
@@ -197,6 +206,11 @@ bs_real bs_sim_phase(const bs_sim *sim);
 
 /* Steps taken since bs_sim_init. 0 for a NULL or uninitialised sim. */
 uint64_t bs_sim_steps(const bs_sim *sim);
+
+/* Simulated time since bs_sim_init [s]: bs_sim_steps(sim) times the scene's
+ * dt, multiplied (never summed step by step, so it does not drift); in
+ * float it is exact to 2^-24 relative. NaN for a NULL or uninitialised sim. */
+bs_real bs_sim_time(const bs_sim *sim);
 
 /* FNV-1a hash of the complete dynamic state (bit patterns), for determinism
  * checks. 0 for a NULL or uninitialised sim. */

@@ -211,8 +211,9 @@ static bs_real twin_power(const bs_sim *sim)
 #endif
 }
 
-bs_status bs_observer_init(bs_observer *obs, const bs_sim *sim, const bs_observer_gains *gains,
-                           const bs_observer_options *options)
+bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer_size, size_t gains_size,
+                            bs_observer *obs, const bs_sim *sim, const bs_observer_gains *gains,
+                            const bs_observer_options *options)
 {
     const bs_observer_options defaults = bs_observer_defaults();
     const bs_status status = bs_sim_status(sim);
@@ -220,6 +221,9 @@ bs_status bs_observer_init(bs_observer *obs, const bs_sim *sim, const bs_observe
 
     if (!obs)
         return BS_E_NULL;
+    if (tag != BS_BUILD_TAG || observer_tag != BS_OBSERVER_TAG || observer_size != sizeof(bs_observer)
+        || gains_size != sizeof(bs_observer_gains))
+        return BS_E_BUILD; /* an observer of another layout: not even its ready field is ours to write */
     obs->ready = 0;
     if (status != BS_OK)
         return status;

@@ -367,6 +367,13 @@ uint64_t bs_sim_steps(const bs_sim *sim)
     return bs_sim_is_ready(sim) ? sim->step : 0;
 }
 
+bs_real bs_sim_time(const bs_sim *sim)
+{
+    if (!bs_sim_is_ready(sim))
+        return bs_real_nan();
+    return (bs_real)sim->step * sim->scene->dt; /* steps times dt, never accumulated */
+}
+
 static uint32_t hash_bytes(uint32_t hash, const void *data, unsigned long size)
 {
     const unsigned char *byte = (const unsigned char *)data;
