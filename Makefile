@@ -4,7 +4,8 @@
 #   make run          build and run the fig6 scene (60 s), print its summary
 #   make test         build and run the tests, float and double (under two minutes)
 #   make test-long    the slow checks: valgrind, minute-long fuzzing, whole runs under QEMU,
-#                     a sharded map on a private single-node Slurm (as root; tests/slurm/)
+#                     a sharded map on a private single-node Slurm (as root; tests/slurm/), the
+#                     observer's measured s on its own 60 s plant (twin-bias-long)
 #   make lib          the libraries in both precisions: build/lib/libbeamslider-double.a
 #                     and -float.a (the core), libbeamslider-host-double.a, -float.a and
 #                     .so (libbeamslider-host: host/include/beamslider_host.h) (with
@@ -208,6 +209,15 @@ scenarios-long:
 	    $(MAKE) --no-print-directory -s REAL=$$real $(BUILD)/$$real/beamslider; \
 	    sh tests/check_scenarios.sh $(BUILD)/$$real/beamslider; done
 TEST_LONG += scenarios-long
+
+# The observer's measured s on its own nominal plant: 60 s of fig6 in each
+# precision (tests/check_twin_bias.sh, ~10 CPU-s each).
+twin-bias-long:
+	@$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	@$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
+	@set -e; for real in double float; do sh tests/check_twin_bias.sh $(BUILD)/$$real/beamslider; done
+.PHONY: twin-bias-long
+TEST_LONG += twin-bias-long
 
 # Fragments of the other tools (reports, reference, robustness) add their own
 # targets and test targets (TEST_EXTRA, TEST_LONG, above).

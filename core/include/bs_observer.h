@@ -26,6 +26,7 @@
 #define BS_OBSERVER_H
 
 #include "beamslider.h"
+#include "bs_lockin_layout.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -144,11 +145,6 @@ typedef struct bs_observer_estimate {
     int health;             /* 0, or BS_OBSERVER_HEALTH_* bits */
 } bs_observer_estimate;
 
-/* The lock-in's two low-pass stages of one product. */
-typedef struct bs_lowpass2 {
-    bs_real stage[2];
-} bs_lowpass2;
-
 /* PRIVATE members (core/src/bs_observer.c). */
 typedef struct bs_observer {
     uint32_t ready;
@@ -160,8 +156,7 @@ typedef struct bs_observer {
     bs_real past_signal[BS_OBSERVER_MAX_LATENCY + 1]; /* the twin's signal, newest at head */
     bs_real past_accel[BS_OBSERVER_MAX_LATENCY + 1];  /* a_k, aligned with it */
     bs_real past_deflection[BS_OBSERVER_MAX_LATENCY + 1]; /* the twin's w(4L/7), aligned with it */
-    bs_real quadrature;                               /* leaky integral of the aligned a_k [m/s] */
-    bs_lowpass2 ref_aa, ref_bb, ref_b;                /* <a^2>, <b^2>, <b> */
+    bs_lockin_reference reference;                    /* the aligned a_k and its quadrature */
     bs_lowpass2 meas_a, meas_b;                       /* <y a>, <y b> */
     bs_lowpass2 twin_a, twin_b;                       /* <y^ a>, <y^ b> */
     bs_lowpass2 defl_a, defl_b;                       /* <w a>, <w b>: the twin's w(4L/7) */

@@ -43,11 +43,12 @@ typedef struct observer_design_options {
 #define OBSERVER_MAP_SPACING 1.02
 
 /* Defaults (observer_design_defaults): deflection, no latency, no
- * acceleration noise, force noise OBSERVER_DEFAULT_FORCE_NOISE, map 60 + 40
- * periods per point, maps from the scene; noise has no default (the caller
- * states it). */
+ * acceleration noise, force noise OBSERVER_DEFAULT_FORCE_NOISE, map 150 + 40
+ * periods per point (the high branch settles over ~140 periods after a step
+ * of s: docs/twin.md, "Observer" 4), maps from the scene; noise has no
+ * default (the caller states it). */
 #define OBSERVER_DEFAULT_FORCE_NOISE 1e-3
-#define OBSERVER_DEFAULT_MAP_HOLD 60
+#define OBSERVER_DEFAULT_MAP_HOLD 150
 #define OBSERVER_DEFAULT_MAP_RECORD 40
 
 /* The defaults, with noise as given. */
