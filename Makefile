@@ -178,6 +178,7 @@ test-sweeps:
 # targets and test targets (TEST_EXTRA, TEST_LONG, above).
 -include host/reports/reports.mk tests/reference/reference.mk tests/robustness.mk
 include tests/consumer/consumer.mk
+include tests/buildsys/buildsys.mk
 include tests/slurm/slurm.mk
 
 # Builds run two at a time (-j2, the prerequisites); the tests themselves in order.
