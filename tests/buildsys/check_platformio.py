@@ -12,7 +12,9 @@ runs it):
                  meaning changed between PlatformIO releases); extraScript
                  exists and, run with a stand-in of PlatformIO's Import(),
                  adds the folder of bs_build_config.h to the shared include
-                 path and the port's (bs_port.h) to the library's own flags
+                 path and the port's (bs_port.h) to the library's own flags;
+                 the generated header's template has only the fill-ins that
+                 include/bs_build_config.h stands in for
   platformio.ini the example's: lib_deps takes the library by symlink://
                  and the path leads to LIB_DIR; build_flags select the
                  precision (BS_REAL_FLOAT) and a scene header that exists
@@ -177,6 +179,13 @@ def check_library(lib_dir, root):
     ccflags = [str(f) for f in added.get("CCFLAGS", [])]
     check("extraScript: the folder of bs_build_config.h on the shared include path (CPPPATH)",
           any(os.path.isfile(os.path.join(p, "bs_build_config.h")) for p in cpppath), repr(cpppath))
+    # include/bs_build_config.h stands in for the generated header: it covers
+    # the template's two fill-ins (BS_REAL_FLOAT from build_flags, the switches
+    # as build_flags' defines); a new fill-in needs it updated.
+    template = open(os.path.join(root, "core", "include", "bs_build_config.h.in"), encoding="utf-8").read()
+    check("bs_build_config.h.in has the fill-ins include/bs_build_config.h stands in for",
+          sorted(set(re.findall(r"@[A-Z_]+@", template))) == ["@BS_CONFIG_LINES@", "@BS_REAL_FLOAT@"],
+          repr(sorted(set(re.findall(r"@[A-Z_]+@", template)))))
     private = [f[2:] for f in ccflags if f.startswith("-I")]
     check("extraScript: the port's folder (bs_port.h) on the library's own flags only",
           any(os.path.isfile(os.path.join(p, "bs_port.h")) for p in private)
