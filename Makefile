@@ -223,6 +223,7 @@ TEST_LONG += twin-bias-long
 # targets and test targets (TEST_EXTRA, TEST_LONG, above).
 -include host/reports/reports.mk tests/reference/reference.mk tests/robustness.mk
 include tests/consumer/consumer.mk
+include tests/buildsys/buildsys.mk
 include tests/slurm/slurm.mk
 
 # Builds run JOBS at a time (the prerequisites); the tests themselves in order.

@@ -2,7 +2,7 @@
 # by `make install` (installed as PREFIX/lib/cmake/beamslider/; this file is
 # port/cmake/beamsliderConfig.cmake).
 #
-#   find_package(beamslider 0.7 REQUIRED)              # or COMPONENTS double float host-double host-float
+#   find_package(beamslider 0.8 REQUIRED)              # or COMPONENTS double float host-double host-float
 #   target_link_libraries(app PRIVATE beamslider::host-double)
 #
 # Imported targets, two per precision (bs_real): beamslider::double and
