@@ -139,7 +139,7 @@ $(STEP_DIFF_DIR)/$1.$2.compiled: tests/embedded/step_diff.c $(CORE_SRC) $(wildca
 $(STEP_DIFF_DIR)/$1.$2.runtime: tests/embedded/step_diff.c configs/$1.h $(BUILD)/$2/include/bs_build_config.h \
         $(CORE_SRC:%.c=$(BUILD)/$2/%.o)
 	@mkdir -p $$(dir $$@)
-	$$(CC) -O2 $$(BASE_CFLAGS) -I$(BUILD)/$2/include -Icore/include -Iport/host -I. \
+	$$(CC) -O2 $$(BASE_CFLAGS) $$(filter -fsanitize%,$$(CFLAGS)) -I$(BUILD)/$2/include -Icore/include -Iport/host -I. \
 	    -DDIFF_SCENE_HEADER='"configs/$1.h"' -o $$@ tests/embedded/step_diff.c $(CORE_SRC:%.c=$(BUILD)/$2/%.o) -lm
 endef
 $(foreach s,$(STEP_DIFF_ALL),$(foreach r,double float,$(eval $(call step__diff,$s,$r))))
