@@ -254,6 +254,17 @@ static void test_rows_carry_a_check_that_finds_damage(void **state)
         }
         assert_false(map_row_valid(&grid, row, i + 1, &c));
     }
+    /* a NUL byte behind a check made for it (a forged or damaged file, not
+     * text: the row would be cut there when read as a string; found by
+     * tests/fuzz/fuzz_map.c) */
+    {
+        char *last;
+        strcpy(copy, row);
+        last = strrchr(copy, ',');
+        copy[(size_t)(last - copy) - 2] = '\0';
+        snprintf(last + 1, 10, "%08lx\n", (unsigned long)map_row_check(copy, (size_t)(last - copy) + 1));
+        assert_false(map_row_valid(&grid, copy, length, &c));
+    }
     /* a row of another grid */
     map_grid_free(&grid);
     {

@@ -222,8 +222,8 @@ int map_row_valid(const map_grid *grid, const char *line, size_t length, long *c
     int repeat, columns = 1, v;
     size_t i;
 
-    if (length < 12 || line[length - 1] != '\n')
-        return 0;
+    if (length < 12 || line[length - 1] != '\n' || memchr(line, '\0', length))
+        return 0; /* a NUL byte: not text (a reader taking the row as a string would cut it there) */
     for (i = 0; i + 1 < length; ++i)
         columns += line[i] == ',';
     if (columns != column_count(grid))
