@@ -341,6 +341,8 @@ maps = {
     "table_number": folder(points=POINTS.replace("0.0889,", "0x1p3,")),
     # a row with a NUL byte behind a valid check was taken, and read as a string cut short
     "regress-nul-row": folder(a=ROWS_A + row(1) + ",0.0\x003,00000000\n", flags=1),
+    # a count of 100 digits behind a valid check: merged into a map.csv map-plot refused
+    "regress-count-digits": folder(a=ROWS_A.replace(",1000,0,1,", ",1000," + "2" * 103 + ",1,", 1), flags=1),
     "no_table": bytes([0]) + "@@\n".join([IDENTITY, ROWS_A, ROWS_B]).encode("latin-1"),
 }
 for name, data in maps.items():
