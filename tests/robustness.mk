@@ -150,8 +150,9 @@ fuzz-minute-%: fuzz-build
 
 # FUZZ_LONG_RUNS executions of every target (a release's campaign, not in CI;
 # docs/robustness.md reports its figures). The machine is shared: nice, and
-# FUZZ_JOBS targets at a time, each to its end whatever the others find. fuzz_api's log ends with how often each of
-# restore's rules decided, which is printed too.
+# FUZZ_JOBS targets at a time, each to its end whatever the others find.
+# fuzz_api's log ends with how often each of restore's rules decided, which
+# is printed too.
 fuzz-long: fuzz-build
 	@echo "fuzz-long: $(words $(FUZZ_TARGETS)) targets x $(FUZZ_LONG_RUNS) executions, $(FUZZ_JOBS) at a time (hours)"
 	@$(MAKE) --no-print-directory -k -j$(FUZZ_JOBS) $(FUZZ_TARGETS:%=fuzz-long-%)

@@ -80,9 +80,11 @@ static void check_grid(const map_grid *grid, const char *scene)
     for (v = 0; v < grid->vary_count; ++v) {
         if (grid->vary[v].count < 1 || grid->vary[v].count > MAP_MAX_VALUES)
             fuzz_fail("map_identity_read gave a field with a count of values beyond its limits");
-        for (k = 0; k < grid->vary[v].count; ++k)
-            if (strnlen(grid->vary[v].values[k], MAP_VALUE) == 0 || strnlen(grid->vary[v].values[k], MAP_VALUE) == MAP_VALUE)
+        for (k = 0; k < grid->vary[v].count; ++k) {
+            const size_t length = strnlen(grid->vary[v].values[k], MAP_VALUE);
+            if (length == 0 || length == MAP_VALUE)
                 fuzz_fail("map_identity_read gave an empty or unterminated value");
+        }
         points *= grid->vary[v].count;
         if (points > MAP_MAX_CASES)
             fuzz_fail("map_identity_read gave a grid of more points than a map may have");
