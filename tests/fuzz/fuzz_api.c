@@ -200,11 +200,13 @@ static int decide(const bs_sim *target, const unsigned char *b, size_t size, con
         return RULE_MODEL;
     if (word64(b, AT_STEP) == UINT64_MAX)
         return RULE_STEP_MAX;
-    {
+    { /* a residual >= 0 or -1, or, unconverged, +inf or NaN (a contact problem that overflowed) */
         const bs_real residual = real_at(b, R_RESIDUAL);
+        const uint32_t converged = word32(b, AT_COUNTS + 12);
         if (!(word32(b, AT_COUNTS) < (1u << BS_MAX_CONTACTS) && word32(b, AT_COUNTS + 4) <= BS_SOLVER_MAX_SWEEPS
-              && word32(b, AT_COUNTS + 8) <= BS_SOLVER_MAX_SWEEPS && word32(b, AT_COUNTS + 12) <= 1u
-              && fuzz_finite(residual) && (residual >= BS_R(0.0) || residual == BS_R(-1.0))))
+              && word32(b, AT_COUNTS + 8) <= BS_SOLVER_MAX_SWEEPS && converged <= 1u
+              && (fuzz_finite(residual) ? residual >= BS_R(0.0) || residual == BS_R(-1.0)
+                                        : converged == 0u && !(residual < BS_R(0.0)))))
             return RULE_REPORT;
     }
     if (!all_finite(b, R_PERCUSSION, BS_MAX_CONTACTS * BS_ROWS))

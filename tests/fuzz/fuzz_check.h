@@ -73,6 +73,8 @@ static inline bs_status fuzz_step_checked(bs_sim *sim)
             fuzz_fail("bs_sim_step reported convergence other than 0 or 1");
         if (report.residual < BS_R(0.0) && !(report.residual == BS_R(-1.0) && !solver.measure_residual))
             fuzz_fail("bs_sim_step reported a negative residual other than -1 (not measured)");
+        if (!fuzz_finite(report.residual) && report.converged)
+            fuzz_fail("bs_sim_step reported a converged solve whose residual is not finite");
         fuzz_state_restorable(sim);
         return status;
     }
