@@ -4,13 +4,17 @@
 #   make run          build and run the fig6 scene (60 s), print its summary
 #   make test         build and run the tests, float and double (under two minutes)
 #   make test-long    the slow checks: valgrind, minute-long fuzzing, whole runs under QEMU,
-#                     a sharded map on a private single-node Slurm (as root; tests/slurm/)
-#   make lib          the core as static libraries: build/lib/libbeamslider-double.a and
-#                     -float.a (with TARGET=cortex-m4f SCENE=fig6 REAL=float: for that
-#                     target and compiled scene, build/lib/cortex-m4f/; port/lib.mk)
-#   make install [PREFIX=/usr/local] [DESTDIR=]   the library in both precisions, its
-#                     headers, pkg-config files (beamslider-double, beamslider-float),
-#                     the CMake package beamslider and the licence (make uninstall)
+#                     a sharded map on a private single-node Slurm (as root; tests/slurm/), the
+#                     observer's measured s on its own 60 s plant (twin-bias-long)
+#   make lib          the libraries in both precisions: build/lib/libbeamslider-double.a
+#                     and -float.a (the core), libbeamslider-host-double.a, -float.a and
+#                     .so (libbeamslider-host: host/include/beamslider_host.h) (with
+#                     TARGET=cortex-m4f SCENE=fig6 REAL=float: the core for that target
+#                     and compiled scene, build/lib/cortex-m4f/; port/lib.mk)
+#   make install [PREFIX=/usr/local] [DESTDIR=]   the libraries in both precisions,
+#                     their headers, pkg-config files (beamslider-host-double, -float,
+#                     beamslider-double, -float), the CMake package beamslider, the
+#                     beamslider program, the scenes and the licence (make uninstall)
 #   make fields       docs/fields.md: every scene field (also `beamslider fields`)
 #   make configs      regenerate the compile-time scene headers configs/*.h
 #   make test-sweeps  the contact solve's tests built with BS_WITH_SUBSPACE=0
@@ -29,6 +33,7 @@ SCENE ?= fig6         # the compiled scene of a Cortex-M build (configs/SCENE.h)
 STEPS ?= 20000        # steps the Cortex-M build runs
 CONFIG ?=             # more switches of the core's build configuration: NAME=VALUE ...
 PREFIX ?= /usr/local  # where `make install` puts the library
+JOBS ?= $(shell nproc 2>/dev/null || echo 2)  # parallel builds of `make run` and `make test`
 
 ifeq ($(filter $(strip $(REAL)),float double),)
 $(error REAL must be float or double, not '$(REAL)')
@@ -39,6 +44,7 @@ SCENE := $(strip $(SCENE))
 STEPS := $(strip $(STEPS))
 CONFIG := $(strip $(CONFIG))
 PREFIX := $(strip $(PREFIX))
+JOBS := $(strip $(JOBS))
 OBJ := $(BUILD)/$(REAL)
 VERSION := $(shell sed -n 's/^\#define BS_VERSION_STRING "\(.*\)"/\1/p' core/include/beamslider.h)
 
@@ -50,24 +56,41 @@ CONFIG_H := $(OBJ)/include/bs_build_config.h
 WARNINGS := -Wall -Wextra -Werror -Wdouble-promotion -Wfloat-conversion -Wundef -Wshadow \
             -Wstrict-prototypes -Wvla
 CFLAGS ?= -O2 -g
+# The core's objects at -O3 after CFLAGS: its loops over modes, corners and
+# contact rows have short constant lengths (bs_inline.h: BS_MODES_SWITCH),
+# which -O3 unrolls; fig6 runs in a quarter fewer instructions per step than
+# at -O2 (docs/performance.md). CORE_OPT= keeps CFLAGS's level (a debug build).
+CORE_OPT ?= -O3
 BASE_CFLAGS := -std=c99 -ffp-contract=off -fno-math-errno $(WARNINGS)
 # Core: no libc calls; keep GCC from turning loops into memset/memcpy calls
 # (a GCC flag: other compilers go without; check_core_symbols.sh still checks).
 NO_LOOP_CALLS := $(shell $(CC) -fno-tree-loop-distribute-patterns -Werror -E -x c /dev/null >/dev/null 2>&1 \
                    && echo -fno-tree-loop-distribute-patterns)
 CORE_INC := -I$(OBJ)/include -Icore/include
-CORE_CFLAGS := $(BASE_CFLAGS) $(NO_LOOP_CALLS) $(CORE_INC) -Icore/src -Iport/host
-HOST_CFLAGS := $(BASE_CFLAGS) $(CORE_INC) -Iport -Iport/host -Ihost/lib -Ihost/cli
+# Host objects are position-independent: the same objects make the CLI, the
+# tests and the installed libraries (a shared one among them; port/lib.mk).
+# -fno-semantic-interposition keeps calls within a file direct and
+# inlinable, as in a program (the library's symbols are not interposed).
+HOST_PIC := -fPIC -fno-semantic-interposition
+CORE_CFLAGS := $(BASE_CFLAGS) $(HOST_PIC) $(NO_LOOP_CALLS) $(CORE_INC) -Icore/src -Iport/host
+# The host library's wings (host/lib/README.md), each on the include path:
+# a file includes another wing's header by its name.
+HOST_WINGS := io scene run map twin api
+HOST_INC := -Ihost/include $(HOST_WINGS:%=-Ihost/lib/%)
+HOST_CFLAGS := $(BASE_CFLAGS) $(HOST_PIC) $(CORE_INC) -Iport -Iport/host $(HOST_INC) -Ihost/cli
 # Tests also reach the core's internal headers (core/src) to test its parts.
-TEST_CFLAGS := $(HOST_CFLAGS) -Icore/src -Itests
+# They are programs, not library code: no HOST_PIC (with it, GCC 12 takes
+# opendir's own alias for another allocator: -Wmismatched-dealloc).
+TEST_CFLAGS := $(filter-out $(HOST_PIC),$(HOST_CFLAGS)) -Icore/src -Itests
 
 CORE_SRC := $(wildcard core/src/*.c)
 HOST_CLI_SRC := $(wildcard host/cli/*.c)
-HOST_LIB_SRC := $(wildcard host/lib/*.c) port/host/bs_platform_host.c
+HOST_LIB_SRC := $(foreach w,$(HOST_WINGS),$(wildcard host/lib/$w/*.c)) port/host/bs_platform_host.c
+HOST_HEADERS := $(wildcard host/include/*.h host/lib/*/*.h host/cli/*.h)
 CORE_OBJ := $(CORE_SRC:%.c=$(OBJ)/%.o)
 HOST_CLI_OBJ := $(HOST_CLI_SRC:%.c=$(OBJ)/%.o)
 HOST_LIB_OBJ := $(HOST_LIB_SRC:%.c=$(OBJ)/%.o)
-HOST_LIBS := -linih -lcjson -lm
+HOST_LIBS := -linih -lcjson -lm -pthread
 
 TESTS := $(basename $(notdir $(wildcard tests/test_*.c)))
 # ... and the C++ one (tests/test_cxx.cpp, below)
@@ -77,7 +100,7 @@ TEST_LIBS := -lcmocka $(HOST_LIBS)
 BUILD_PACKAGES := gcc make libc6-dev libinih-dev libcjson-dev
 TEST_PACKAGES := $(BUILD_PACKAGES) libcmocka-dev binutils g++ cmake pkg-config
 
-.PHONY: all run test test-long test-one embedded-long test-sweeps lib install uninstall configs fields accuracy-check clean deps-build deps-test .force
+.PHONY: all run test test-long test-one embedded-long test-sweeps scenarios-long lib install uninstall configs fields accuracy-check clean deps-build deps-test .force
 .SECONDARY:
 .DEFAULT_GOAL := all
 
@@ -96,36 +119,44 @@ $(OBJ)/include/bs_revision.h: .force
 	@mkdir -p $(dir $@)
 	@printf '/* generated by make: the source revision of this build */\n#define BS_REVISION "%s"\n' '$(REVISION)' > $@.tmp
 	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
-$(OBJ)/host/lib/summary.o $(OBJ)/host/lib/map_store.o $(OBJ)/host/cli/main.o $(OBJ)/tests/test_summary.o: $(OBJ)/include/bs_revision.h
+$(OBJ)/host/lib/scene/scene_summary.o $(OBJ)/host/lib/map/map_store.o $(OBJ)/host/cli/main.o $(OBJ)/tests/test_summary.o: $(OBJ)/include/bs_revision.h
+
+# What the objects of $(OBJ) were compiled with: a change of compiler or
+# flags (HOST_PIC, CFLAGS) rebuilds them, not only a change of sources.
+BUILD_FLAGS := $(OBJ)/build.flags
+$(BUILD_FLAGS): .force
+	@mkdir -p $(@D)
+	@printf '%s\n' '$(CC) $(CFLAGS) $(CORE_CFLAGS) $(HOST_CFLAGS)' | cmp -s - $@ \
+	    || printf '%s\n' '$(CC) $(CFLAGS) $(CORE_CFLAGS) $(HOST_CFLAGS)' > $@
 
 # (both precisions: the reference and the reports use the double one from any REAL)
 $(BUILD)/double/include/bs_build_config.h $(BUILD)/float/include/bs_build_config.h: .force
 	@sh port/build_config.sh $@ $(word 2,$(subst /, ,$(patsubst $(BUILD)/%,x/%,$@))) $(CONFIG)
 
-$(OBJ)/core/%.o: core/%.c $(wildcard core/*/*.h) port/host/bs_port.h $(CONFIG_H) | deps-build
+$(OBJ)/core/%.o: core/%.c $(wildcard core/*/*.h) port/host/bs_port.h $(CONFIG_H) $(BUILD_FLAGS) | deps-build
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(CORE_CFLAGS) -c -o $@ $<
+	$(CC) $(CFLAGS) $(CORE_OPT) $(CORE_CFLAGS) -c -o $@ $<
 
-$(OBJ)/host/%.o: host/%.c $(wildcard host/*/*.h core/include/*.h) $(CONFIG_H) | deps-build
-	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(HOST_CFLAGS) -c -o $@ $<
-
-$(OBJ)/port/host/%.o: port/host/%.c port/bs_platform.h $(CONFIG_H) | deps-build
+$(OBJ)/host/%.o: host/%.c $(HOST_HEADERS) $(wildcard core/include/*.h) $(CONFIG_H) $(BUILD_FLAGS) | deps-build
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(HOST_CFLAGS) -c -o $@ $<
 
-$(OBJ)/tests/%.o: tests/%.c $(wildcard tests/*.h host/*/*.h core/*/*.h) $(CONFIG_H) | deps-test
+$(OBJ)/port/host/%.o: port/host/%.c port/bs_platform.h $(CONFIG_H) $(BUILD_FLAGS) | deps-build
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(HOST_CFLAGS) -c -o $@ $<
+
+$(OBJ)/tests/%.o: tests/%.c $(wildcard tests/*.h core/*/*.h) $(HOST_HEADERS) $(CONFIG_H) $(BUILD_FLAGS) | deps-test
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(TEST_CFLAGS) -c -o $@ $<
 
 $(OBJ)/tests/test_%: $(OBJ)/tests/test_%.o $(OBJ)/tests/support.o $(HOST_LIB_OBJ) $(CORE_OBJ)
 	$(CC) $(CFLAGS) -o $@ $^ $(TEST_LIBS)
 
-# Fragments append test targets to TEST_EXTRA (part of `make test`, which must
-# stay under two minutes on a 2-core machine) or TEST_LONG (`make test-long`:
-# the slow checks).
-TEST_EXTRA := test-sweeps accuracy-check
-TEST_LONG :=
+# Fragments append test targets to TEST_EXTRA (part of `make test`, whose budget
+# is 150 CPU-seconds with the build done: README.md) or TEST_LONG (`make
+# test-long`: the slow checks, CI runs them too).
+TEST_EXTRA := accuracy-check
+TEST_LONG := test-sweeps
 
 include tests/embedded/embedded.mk
 include port/lib.mk
@@ -145,12 +176,13 @@ $(OBJ)/tests/test_cxx: tests/test_cxx.cpp $(CXX_CORE) $(wildcard core/include/*.
 	$(CXX) $(CXXFLAGS) $(CXX_WARNINGS) -I$(CXX_CORE:.a=.obj)/include -Icore/include -I. -o $@ $< $(CXX_CORE) -lm
 
 ifeq ($(TARGET),host)
-run: all
+run:
+	@$(MAKE) --no-print-directory -j$(JOBS) all
 	$(BUILD)/beamslider run configs/fig6.ini --out $(BUILD)/fig6.csv --every 20
 endif
 
 # Every test in this REAL, then the core symbol check.
-test-one: $(TEST_BIN) $(OBJ)/beamslider $(TWIN_PACK)
+test-one: $(TEST_BIN) $(OBJ)/beamslider $(TWIN_PACK) step-diff-test
 	@set -e; for t in $(TEST_BIN); do echo "== $$t"; ./$$t; done
 	@sh tests/check_core_symbols.sh $(REAL) $(CORE_OBJ)
 	@sh tests/check_core_includes.sh
@@ -161,7 +193,8 @@ test-one: $(TEST_BIN) $(OBJ)/beamslider $(TWIN_PACK)
 	@sh tests/check_map.sh $(OBJ)/beamslider
 
 # The contact solve built without its subspace step (BS_WITH_SUBSPACE=0, the
-# real-time option of docs/porting.md): its unit tests in both precisions.
+# real-time option of docs/porting.md): its unit tests in both precisions
+# (`make test-long`).
 SWEEPS_BUILD := $(BUILD)/sweeps
 SWEEPS_FLAGS := CONFIG=BS_WITH_SUBSPACE=0 BUILD=$(SWEEPS_BUILD)
 test-sweeps:
@@ -169,17 +202,35 @@ test-sweeps:
 	    $(MAKE) --no-print-directory -s REAL=$$real $(SWEEPS_FLAGS) $(SWEEPS_BUILD)/$$real/tests/test_pgs; \
 	    echo "== $(SWEEPS_BUILD)/$$real/tests/test_pgs (BS_WITH_SUBSPACE=0)"; $(SWEEPS_BUILD)/$$real/tests/test_pgs; done
 
+# The outcome classes of the papers' six scenarios, both precisions (`make
+# test-long`; make test classifies fig6 alone, in tests/check_map.sh).
+scenarios-long:
+	@set -e; for real in double float; do \
+	    $(MAKE) --no-print-directory -s REAL=$$real $(BUILD)/$$real/beamslider; \
+	    sh tests/check_scenarios.sh $(BUILD)/$$real/beamslider; done
+TEST_LONG += scenarios-long
+
+# The observer's measured s on its own nominal plant: 60 s of fig6 in each
+# precision (tests/check_twin_bias.sh, ~10 CPU-s each).
+twin-bias-long:
+	@$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	@$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
+	@set -e; for real in double float; do sh tests/check_twin_bias.sh $(BUILD)/$$real/beamslider; done
+.PHONY: twin-bias-long
+TEST_LONG += twin-bias-long
+
 # Fragments of the other tools (reports, reference, robustness) add their own
 # targets and test targets (TEST_EXTRA, TEST_LONG, above).
 -include host/reports/reports.mk tests/reference/reference.mk tests/robustness.mk
 include tests/consumer/consumer.mk
+include tests/buildsys/buildsys.mk
 include tests/slurm/slurm.mk
 
-# Builds run two at a time (-j2, the prerequisites); the tests themselves in order.
+# Builds run JOBS at a time (the prerequisites); the tests themselves in order.
 test: deps-test
-	$(MAKE) --no-print-directory -j2 REAL=double test-one
-	$(MAKE) --no-print-directory -j2 REAL=float test-one
-	$(MAKE) --no-print-directory -j2 embedded-test
+	$(MAKE) --no-print-directory -j$(JOBS) REAL=double test-one
+	$(MAKE) --no-print-directory -j$(JOBS) REAL=float test-one
+	$(MAKE) --no-print-directory -j$(JOBS) embedded-test
 	$(if $(strip $(TEST_EXTRA)),$(MAKE) --no-print-directory $(TEST_EXTRA))
 	@echo "make test: all tests passed (double and float)"
 

@@ -103,6 +103,51 @@ for bad in nan:m_nan.csv:15:finite gap:m_gap.csv:16:gap rate:m_rate.csv:sample_r
         || pass "twin on a stream with a $what writes no estimates"
 done
 
+# ---- one glitch in the measured signal (1e10 m at t = 0.04 s) neither ends
+# the twin nor throws it off the beam: skipped, counted, flagged
+"$bin" twin-plant configs/fig6.ini --out "$tmp/clean.csv" --t-end 0.1 --snr 40 >/dev/null 2>"$tmp/e"
+awk -F, 'NR == 2010 && /^[0-9]/ { $3 = "1e10" } { print }' OFS=, "$tmp/clean.csv" >"$tmp/glitch.csv"
+"$bin" twin configs/fig6.ini --measured "$tmp/glitch.csv" --out "$tmp/est_glitch.csv" >"$tmp/o" 2>"$tmp/e"
+check_status "twin on a stream with one glitch of 1e10 m exits 0" 0 $? "$tmp/e"
+check_has "... and counts it as an outlier" "$tmp/o" '"outliers":1,'
+check_has "... its estimates say so from then on (outliers, health)" "$tmp/est_glitch.csv" ',1,1'
+if report=$(awk -F, 'NR > 1 && ($2 < 0.25 || $2 > 0.35) { printf "t = %s: s_hat = %s\n", $1, $2; exit 1 }' \
+               "$tmp/est_glitch.csv"); then
+    pass "... and its s stays near the plant's (0.25 .. 0.35)"
+else
+    fail "... and its s stays near the plant's (0.25 .. 0.35)" "$report"
+fi
+"$bin" twin configs/fig6.ini --measured "$tmp/clean.csv" --out "$tmp/est_clean.csv" >"$tmp/o" 2>"$tmp/e"
+check_has "the stream without the glitch has no outlier" "$tmp/o" '"outliers":0,'
+
+# ---- the observer design's cost is bounded: maps at 1-8 Hz (some 2.5e9
+# steps of simulation, minutes) are refused at once with the estimate
+"$bin" twin-gains configs/fig6.ini --noise 1e-6 --map-frequencies 1,2,3,4,5,6,7,8 >"$tmp/o" 2>"$tmp/e"
+check_status "twin-gains with maps at 1-8 Hz exits 2" 2 $? "$tmp/e"
+check_has "... with the cost it would have and the bound" "$tmp/e" "need about 2.48e+09 steps of simulation, more than the design's bound of 2e+08"
+[ -s "$tmp/o" ] && fail "... and writes no header" "$(head -c 80 "$tmp/o")" || pass "... and writes no header"
+
+# ---- twin-plant steps the scene's [excitation] schedule as run does: with
+# no noise and no quantisation its signal is run's w(4L/7), step for step
+# (here through a ramp from 124 to 110 Hz within the first 0.2 s; a plant
+# that kept the scene's first frequency parts from run within the ramp)
+ramp="--set excitation.schedule=0:124:14,0.2:110:14 --set run.t_end=0.3"
+# shellcheck disable=SC2086
+"$bin" twin-plant configs/fig6.ini $ramp --snr inf --bits 0 --out "$tmp/plant.csv" >/dev/null 2>"$tmp/e"
+check_status "twin-plant of a scene with a schedule exits 0" 0 $? "$tmp/e"
+# shellcheck disable=SC2086
+"$bin" run configs/fig6.ini $ramp --every 1 --out "$tmp/run.csv" >/dev/null 2>"$tmp/e"
+check_status "run of the same scene exits 0" 0 $? "$tmp/e"
+if report=$(awk -F, 'NR == FNR { if ($1 ~ /^[0-9]/) y[++n] = $3; next }
+                     FNR > 2 { k = FNR - 2; d = y[k] - $2; if (d < 0) d = -d; m = $2 < 0 ? -$2 : $2
+                               if (!(d <= 6e-9 * m + 1e-18)) { printf "step %d: plant %s, run %s\n", k, y[k], $2; exit 1 } ++c }
+                     END { if (c != 15000) { printf "%d steps compared, expected 15000\n", c; exit 1 } }' \
+               "$tmp/plant.csv" "$tmp/run.csv"); then
+    pass "twin-plant follows the schedule: its w(4L/7) is run's at every step (to its 9 digits)"
+else
+    fail "twin-plant follows the schedule: its w(4L/7) is run's at every step (to its 9 digits)" "$report"
+fi
+
 # ---- response maps: a schedule wider than the observer's maps cover, and
 # --map-frequencies out of order, are refused saying so (docs/twin.md, "Observer")
 "$bin" twin-gains configs/fig6.ini --noise 1e-6 --set excitation.schedule=0:60:14,10:124:14 >/dev/null 2>"$tmp/e"
@@ -327,6 +372,41 @@ check_status "--version exits 0" 0 $? "$tmp/e"
 check_has "--version names the version" "$tmp/o" "beamslider $(sed -n 's/^#define BS_VERSION_STRING "\(.*\)"/\1/p' core/include/beamslider.h) (revision "
 "$bin" fields extra >"$tmp/o" 2>"$tmp/e"
 check_status "fields with an argument exits 2" 2 $? "$tmp/e"
+
+# ---- twin: a stream shorter than --score-after says why within is null
+"$bin" twin-plant configs/fig6.ini --t-end 0.05 --out "$tmp/short.csv" >"$tmp/o" 2>"$tmp/e"
+check_status "twin-plant of 0.05 s exits 0" 0 $? "$tmp/e"
+"$bin" twin configs/fig6.ini --measured "$tmp/short.csv" --out "$tmp/short_est.csv" --map-frequencies 2000 \
+    --noise 1e-6 --score-after 5 >"$tmp/o" 2>"$tmp/e"
+check_status "twin on a stream shorter than --score-after exits 0" 0 $? "$tmp/e"
+check_has "its summary has within null and scored 0" "$tmp/o" '"scored":0,"within":null'
+check_has "and stderr says why" "$tmp/e" "no row was scored (within and rms_s_error are null): the stream ends at t = 0.05 s, before --score-after 5 s"
+
+# ---- help: each command's own, and the top-level usage lists every option
+"$bin" --help >"$tmp/usage" 2>"$tmp/e"
+check_status "--help exits 0" 0 $? "$tmp/e"
+for command in modes gen sweep run twin twin-plant twin-gains map map-merge map-plot fields; do
+    "$bin" "$command" --help >"$tmp/o" 2>"$tmp/e"
+    status=$?
+    if [ "$status" -eq 0 ] && [ "$(head -n 1 "$tmp/o" | cut -d' ' -f1-3)" = "usage: beamslider $command" ] \
+        && ! grep -q "^usage: beamslider [a-z-]* " "$tmp/e"; then
+        pass "$command --help prints its own usage (exit 0)"
+    else
+        fail "$command --help prints its own usage (exit 0)" "exit $status: $(head -n 2 "$tmp/o") $(cat "$tmp/e")"
+    fi
+    if [ "$(grep -c '^usage: ' "$tmp/o")" -ne 1 ]; then
+        fail "$command --help prints one command's usage only" "$(grep '^usage: ' "$tmp/o")"
+    fi
+    missing=""
+    for option in $(grep -o -e '--[a-z][a-z-]*' "$tmp/o" | sort -u); do
+        grep -q -e "$option" "$tmp/usage" || missing="$missing $option"
+    done
+    if [ -z "$missing" ]; then
+        pass "beamslider --help lists every option of $command"
+    else
+        fail "beamslider --help lists every option of $command" "missing:$missing"
+    fi
+done
 
 echo "check_cli: $passed passed, $failed failed ($bin)"
 [ "$failed" -eq 0 ]

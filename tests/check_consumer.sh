@@ -24,6 +24,15 @@
 #       targets, the same hashes as (a); the next minor version is refused
 #   (d) the consumer compiled against the float headers and linked with the
 #       double library (and the reverse) stops with BS_E_BUILD, not a crash
+#   (e) README.md's library program and CMakeLists.txt, as the README shows
+#       them (between <!-- library-program --> and <!-- library-cmake -->
+#       marks), built from the installed tree alone (no source tree on the
+#       include path) in C and C++, with pkg-config (beamslider-host-double,
+#       -float) and with find_package: they load the installed fig6.ini and
+#       reach the state hash of the installed `beamslider run --t-end 1`
+#   (f) every find_package(beamslider X.Y ...) of the repository's documents
+#       asks for this tree's MAJOR.MINOR (core/include/beamslider.h), which
+#       the installed package accepts
 #   and CM_LIB references nothing but the port's math (check_core_symbols.sh).
 #
 # A missing tool (cc, c++, pkg-config, cmake) skips the checks that need it with
@@ -54,12 +63,15 @@ have() { command -v "$1" >/dev/null 2>&1; }
 skip() { echo "skip - $1: needs $2 (apt-get install $3)"; }
 hash_of() { sed -n 's/.*hash \([0-9a-f]*\).*/\1/p' "$1"; }
 
-# run NAME EXPECTED_STATUS PROGRAM: runs it, output in $out/NAME.txt
+# run NAME EXPECTED_STATUS PROGRAM [ARGUMENTS...]: runs it, output in $out/NAME.txt
 run() {
-    "$3" > "$out/$1.txt" 2>&1
+    name=$1
+    expected=$2
+    shift 2
+    "$@" > "$out/$name.txt" 2>&1
     run_status=$?
-    check_status "$1 runs (exit status $2): $(head -n 1 "$out/$1.txt")" "$2" "$run_status" "$out/$1.txt"
-    [ "$run_status" -eq "$2" ]
+    check_status "$name runs (exit status $expected): $(head -n 1 "$out/$name.txt")" "$expected" "$run_status" "$out/$name.txt"
+    [ "$run_status" -eq "$expected" ]
 }
 
 # build DESCRIPTION COMMAND...: COMMAND's output in $out/build.txt on failure
@@ -182,6 +194,76 @@ if have cmake && have "$CC"; then
 else
     skip "CMake consumers" "cmake and $CC" "cmake gcc"
 fi
+
+# ---- (e) README.md's library program, from the installed tree alone ------------------
+# readme_block NAME: the fenced block between <!-- NAME --> and <!-- /NAME --> of README.md
+readme_block() {
+    awk -v name="$1" '$0 == "<!-- " name " -->" { on = 1; next }
+        $0 == "<!-- /" name " -->" { on = 0 }
+        on && !/^```/' README.md
+}
+app=$out/readme-app
+rm -rf "$app"
+mkdir -p "$app/c" "$app/cxx"
+readme_block library-program >"$app/c/app.c"
+readme_block library-cmake >"$app/c/CMakeLists.txt"
+cp "$app/c/app.c" "$app/cxx/app.cpp"
+sed -e 's/^project(app C)$/project(app CXX)/' -e 's/app\.c)/app.cpp)/' "$app/c/CMakeLists.txt" >"$app/cxx/CMakeLists.txt"
+scene=$stage/share/beamslider/scenes/fig6.ini
+check "README.md holds the library program" grep -q 'bs_host_scene_load' "$app/c/app.c"
+check "README.md holds its CMakeLists.txt" grep -q "find_package(beamslider" "$app/c/CMakeLists.txt"
+"$stage/bin/beamslider" run "$scene" --t-end 1 >"$out/app-run.json" 2>"$out/app-run.err"
+want=$(sed -n 's/.*"hash":"\([0-9a-f]*\)".*/\1/p' "$out/app-run.json")
+check "the installed beamslider runs the installed fig6.ini" test -n "$want"
+# same_run NAME PROGRAM: runs PROGRAM on the installed scene; it prints s ten
+# times and the hash of beamslider run's state
+same_run() {
+    run "$1" 0 "$2" "$scene" &&
+        check "$1 prints s every 0.1 s" test "$(grep -c '^t = ' "$out/$1.txt")" -eq 10 &&
+        if [ "$(hash_of "$out/$1.txt")" = "$want" ]; then pass "$1 reaches beamslider run's state (hash $want)"
+        else fail "$1 reaches beamslider run's state" "$(cat "$out/$1.txt"), beamslider run: $want"; fi
+}
+if have pkg-config && have "$CC"; then
+    build "README program in C against beamslider-host-double (pkg-config, installed tree only)" \
+        sh -c "cd '$app/c' && $CC $C_FLAGS -o app app.c \$(pkg-config --cflags --libs beamslider-host-double)" &&
+        same_run readme-c "$app/c/app"
+    build "README program in C against beamslider-host-float (pkg-config)" \
+        sh -c "cd '$app/c' && $CC $C_FLAGS -o app-float app.c \$(pkg-config --cflags --libs beamslider-host-float)" &&
+        run readme-c-float 0 "$app/c/app-float" "$scene" &&
+        check "the float program prints s every 0.1 s" test "$(grep -c '^t = ' "$out/readme-c-float.txt")" -eq 10
+    if have "$CXX"; then
+        build "README program in C++ against beamslider-host-double (pkg-config)" \
+            sh -c "cd '$app/cxx' && $CXX $CXX_FLAGS -o app app.cpp \$(pkg-config --cflags --libs beamslider-host-double)" &&
+            same_run readme-cxx "$app/cxx/app"
+    fi
+    build "README program linked statically (libbeamslider-host-double.a, libbeamslider-double.a)" \
+        sh -c "cd '$app/c' && $CC $C_FLAGS -o app-static app.c -I'$stage/include/beamslider-double' \
+            '$stage/lib/libbeamslider-host-double.a' '$stage/lib/libbeamslider-double.a' -linih -lcjson -lm -pthread" &&
+        same_run readme-static "$app/c/app-static"
+else
+    skip "README program with pkg-config" "pkg-config and $CC" "pkg-config gcc"
+fi
+if have cmake; then
+    for language in c cxx; do
+        rm -rf "$app/$language/build"
+        build "README program in $language with find_package (its CMakeLists.txt): configure" \
+            cmake -S "$app/$language" -B "$app/$language/build" -DCMAKE_PREFIX_PATH="$stage" &&
+            build "README program in $language with find_package: build" cmake --build "$app/$language/build" &&
+            same_run "readme-cmake-$language" "$app/$language/build/app"
+    done
+else
+    skip "README program with CMake" cmake cmake
+fi
+
+# ---- (f) the find_package versions the documents ask for ------------------------------
+for doc in README.md port/cmake/README.md port/cmake/beamsliderConfig.cmake; do
+    asked=$(grep -o 'find_package(beamslider [0-9][0-9.]*' "$doc" | sed 's/.* //' | sort -u | tr '\n' ' ')
+    if [ -n "$asked" ] && [ "$asked" = "${version%.*} " ]; then
+        pass "$doc asks find_package for ${version%.*}, this version's"
+    else
+        fail "$doc asks find_package for this version's MAJOR.MINOR ${version%.*}" "it asks for: ${asked:-nothing}"
+    fi
+done
 
 # ---- the cross-compiled library of make lib ------------------------------------------
 if [ -n "$cm_lib" ]; then

@@ -2,7 +2,7 @@
 # check_outputs.sh - text from the user in what beamslider writes (issue 26):
 # scene names, descriptions, file names and options reach C headers, gnuplot
 # scripts and JSON only through the one writer of each language
-# (host/lib/out_c.h, out_gnuplot.h, out_json.h). Hostile names (a backquote,
+# (host/lib/io/out_c.h, out_gnuplot.h, out_json.h). Hostile names (a backquote,
 # an @, quotes, a line break, a comment's end, a backslash) go through gen,
 # twin-gains and map-plot; the results are read by the real C compiler,
 # gnuplot and a JSON parser, which must see the text as given and nothing

@@ -3,7 +3,8 @@
 # (port/cortex-m/twin) beyond tests/check_embedded.sh, which compares its QEMU images with
 # their host builds bit for bit:
 #   1. the host build that keeps pace computes what `CLI twin SCENE.ini --measured CSV`
-#      computes: s, s_sigma, amplitude and power every 0.1 s, character for character
+#      computes: s, s_sigma, amplitude, power, outliers and health every 0.1 s, character
+#      for character
 #      (the firmware prints them in the formats of the CLI's --out), with nothing dropped;
 #   2. the SysTick build (a real interrupt as the producer) under QEMU with TWIN_ICOUNT
 #      (-icount: QEMU's time is the instruction count) runs to its end with status 0 (the
@@ -17,10 +18,10 @@ failed=0
 
 "$cli" twin "$scene" --measured "$csv" --out "$tmp/est.csv" --every 5000 > /dev/null &&
     "$host" > "$tmp/host.out" || { echo "FAIL twin: $cli twin or $host failed"; exit 1; }
-awk -F, 'NR > 1 { print $2, $3, $4, $5 }' "$tmp/est.csv" > "$tmp/cli"
-awk '$1 == "t" { print $4, $6, $8, $10 }' "$tmp/host.out" > "$tmp/firmware"
+awk -F, 'NR > 1 { print $2, $3, $4, $5, $11, $12 }' "$tmp/est.csv" > "$tmp/cli"
+awk '$1 == "t" { print $4, $6, $8, $10, $12, $14 }' "$tmp/host.out" > "$tmp/firmware"
 if [ ! -s "$tmp/cli" ] || ! cmp -s "$tmp/cli" "$tmp/firmware"; then
-    echo "FAIL twin: the firmware and \`beamslider twin\` differ (s s_sigma amplitude power):"
+    echo "FAIL twin: the firmware and \`beamslider twin\` differ (s s_sigma amplitude power outliers health):"
     diff "$tmp/cli" "$tmp/firmware" | head -n 6
     failed=1
 elif ! grep -q '^end status 0 .* dropped 0 ' "$tmp/host.out"; then

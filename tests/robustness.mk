@@ -53,11 +53,11 @@ ROBUSTNESS_PACKAGES := valgrind
 # project's warning gate is the gcc build.
 FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
 FUZZ_BASE := -std=c99 -O1 -g -ffp-contract=off -fno-math-errno $(FUZZ_SAN) \
-             -Icore/include -Icore/src -Iport -Iport/host -Ihost/lib -Itests/fuzz -I$(FUZZ_BUILD)/include \
+             -Icore/include -Icore/src -Iport -Iport/host $(HOST_INC) -Itests/fuzz -I$(FUZZ_BUILD)/include \
              -DFUZZ_CONFIGS='"$(CURDIR)/configs"'
 FUZZ_LIB_WARNINGS := -Wall -Wextra -Wno-double-promotion
 FUZZ_SRC := $(CORE_SRC) $(HOST_LIB_SRC)
-FUZZ_HEADERS = $(wildcard core/*/*.h host/*/*.h port/*.h port/host/*.h tests/fuzz/*.h)
+FUZZ_HEADERS = $(wildcard core/*/*.h port/*.h port/host/*.h tests/fuzz/*.h) $(HOST_HEADERS)
 # the build configuration of a precision (the host build's, Makefile)
 fuzz_real_flag = -I$(BUILD)/$1/include
 
@@ -165,15 +165,15 @@ fuzz-long-%: fuzz-build
 # replayed once, reported over the sources the target is about.
 FUZZ_COV := $(BUILD)/fuzz-cov
 FUZZ_COV_FLAGS := -std=c99 -O0 -g -ffp-contract=off -fno-math-errno -fprofile-instr-generate -fcoverage-mapping \
-                  -Icore/include -Icore/src -Iport -Iport/host -Ihost/lib -Itests/fuzz -I$(FUZZ_BUILD)/include \
+                  -Icore/include -Icore/src -Iport -Iport/host $(HOST_INC) -Itests/fuzz -I$(FUZZ_BUILD)/include \
                   -DFUZZ_CONFIGS='"$(CURDIR)/configs"' -Wno-double-promotion
-FUZZ_COV_SCENE := host/lib/scene_ini.c host/lib/scene_build.c host/lib/modal.c host/lib/shape_fit.c \
+FUZZ_COV_SCENE := host/lib/scene/scene_ini.c host/lib/scene/scene_build.c host/lib/scene/modal.c host/lib/scene/shape_fit.c \
                   core/src/bs_scene.c core/src/bs_sim.c
 fuzz_cov_sources = $(strip \
     $(if $(filter fuzz_scene fuzz_scene_set,$1),$(FUZZ_COV_SCENE)) \
-    $(if $(filter fuzz_excitation,$1),host/lib/excitation_file.c host/lib/input_file.c) \
-    $(if $(filter fuzz_measured,$1),host/lib/measured_signals.c host/lib/input_file.c) \
-    $(if $(filter fuzz_map,$1),host/lib/map_store.c host/lib/map_case.c host/lib/map_table.c host/lib/input_file.c) \
+    $(if $(filter fuzz_excitation,$1),host/lib/run/excitation_file.c host/lib/io/input_file.c) \
+    $(if $(filter fuzz_measured,$1),host/lib/twin/measured_signals.c host/lib/io/input_file.c) \
+    $(if $(filter fuzz_map,$1),host/lib/map/map_store.c host/lib/map/map_case.c host/lib/map/map_table.c host/lib/io/input_file.c) \
     $(if $(filter fuzz_step fuzz_api,$1),core/src/*.c))
 
 fuzz-coverage: $(BUILD)/double/include/bs_build_config.h $(FUZZ_BUILD)/include/bs_revision.h
@@ -215,7 +215,7 @@ VG_OBJ := $(BUILD)/double
 $(VG_OBJ)/tests/fuzz/vg_test_sim: tests/fuzz/vg_test_sim.c tests/test_sim.c $(VG_OBJ)/tests/support.o \
         $(HOST_LIB_SRC:%.c=$(VG_OBJ)/%.o) $(CORE_SRC:%.c=$(VG_OBJ)/%.o) | deps-test
 	@mkdir -p $(dir $@)
-	$(CC) -O2 -g $(BASE_CFLAGS) -I$(VG_OBJ)/include -Icore/include -Icore/src -Iport -Iport/host -Ihost/lib -Itests \
+	$(CC) -O2 -g $(BASE_CFLAGS) -I$(VG_OBJ)/include -Icore/include -Icore/src -Iport -Iport/host $(HOST_INC) -Itests \
 	    -o $@ tests/fuzz/vg_test_sim.c $(filter %.o,$^) $(TEST_LIBS)
 
 robustness-deps:

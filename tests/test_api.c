@@ -4,6 +4,8 @@
  * the beam (BS_E_ESCAPED, and set_state taking every state a step produces). */
 #include "support.h"
 
+#include "bs_observer.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -50,6 +52,32 @@ static void test_a_caller_built_differently_is_refused(void **state)
     assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
 }
 
+/* An observer compiled with other table sizes (BS_OBSERVER_MAPS,
+ * BS_OBSERVER_MAX_LATENCY) or another build than the library is refused,
+ * and its memory is not written. */
+static void test_an_observer_built_differently_is_refused(void **state)
+{
+    static bs_observer obs;
+    static bs_observer_gains gains;
+    const uint32_t tag = BS_BUILD_TAG, maps_one = ((uint32_t)1 << 16) | (BS_OBSERVER_TAG & 0xffffu);
+    (void)state;
+    load("configs/fig6.ini");
+    assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    memset(&obs, 0x5a, sizeof obs);
+    assert_int_equal(bs_observer_init_(tag, maps_one, sizeof obs, sizeof gains, &obs, &sim, &gains, NULL), BS_E_BUILD);
+    assert_int_equal(bs_observer_init_(tag, BS_OBSERVER_TAG + 1, sizeof obs, sizeof gains, &obs, &sim, &gains, NULL),
+                     BS_E_BUILD); /* another latency */
+    assert_int_equal(bs_observer_init_(tag ^ 1u, BS_OBSERVER_TAG, sizeof obs, sizeof gains, &obs, &sim, &gains, NULL),
+                     BS_E_BUILD); /* another precision */
+    assert_int_equal(bs_observer_init_(tag, BS_OBSERVER_TAG, sizeof obs, sizeof gains - 4, &obs, &sim, &gains, NULL),
+                     BS_E_BUILD);
+    assert_int_equal(bs_observer_init_(tag, BS_OBSERVER_TAG, sizeof obs + 8, sizeof gains, &obs, &sim, &gains, NULL),
+                     BS_E_BUILD);
+    assert_true(obs.ready == 0x5a5a5a5au); /* not written */
+    assert_int_equal(bs_observer_init(NULL, &sim, &gains, NULL), BS_E_NULL);
+    assert_int_equal(bs_observer_init(&obs, &sim, &gains, NULL), BS_E_ARGUMENT); /* zero gains: this build's, refused */
+}
+
 /* Every function answers a NULL or never-initialised sim without touching
  * it: a status, or the documented value of a read function. */
 static void check_refused(const bs_sim *bad, bs_status expected)
@@ -63,6 +91,8 @@ static void check_refused(const bs_sim *bad, bs_status expected)
     assert_int_equal(bs_sim_set_solver((bs_sim *)bad, &options), expected);
     assert_int_equal(bs_sim_get_solver(bad, &options), expected);
     assert_int_equal(bs_sim_set_pcs_position((bs_sim *)bad, BS_R(0.5)), expected);
+    assert_int_equal(bs_sim_set_contact_laws((bs_sim *)bad, BS_R(0.1), BS_R(0.0)), expected);
+    assert_int_equal(bs_sim_get_contact_laws(bad, &w, &slope), expected);
     assert_int_equal(bs_sim_get_report(bad, &report), expected);
     assert_int_equal(bs_sim_get_state(bad, q, q, pose, pose), expected);
     assert_int_equal(bs_sim_set_state((bs_sim *)bad, q, q, pose, pose), expected);
@@ -72,6 +102,7 @@ static void check_refused(const bs_sim *bad, bs_status expected)
     assert_true(isnan((double)bs_sim_sensor(bad)));
     assert_true(isnan((double)bs_sim_position(bad)));
     assert_true(isnan((double)bs_sim_phase(bad)));
+    assert_true(isnan((double)bs_sim_time(bad)));
     assert_int_equal(bs_sim_steps(bad), 0);
     assert_int_equal(bs_sim_hash(bad), 0);
 }
@@ -221,6 +252,33 @@ static void test_beam_at_matches_the_sensor(void **state)
     assert_int_equal(bs_sim_beam_at(&sim, BS_R(0.01), NULL, NULL), BS_OK);
 }
 
+/* The time is steps times dt, from 0 at the start; a changed frequency
+ * goes through bs_sim_set_excitation, and the same change made in a copy of
+ * the scene is refused with a field text that says so. */
+static void test_time_and_a_changed_frequency(void **state)
+{
+    static bs_scene copy;
+    const char *field = NULL;
+    uint64_t n;
+    (void)state;
+    load("configs/fig6.ini");
+    assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    assert_true(bs_sim_time(&sim) == BS_R(0.0));
+    for (n = 1; n <= 2500; ++n) {
+        assert_int_equal(bs_sim_step(&sim), BS_OK);
+        if (n % 500 == 0)
+            assert_true(bs_sim_time(&sim) == (bs_real)n * scene.dt);
+    }
+    assert_close("t after 2500 steps", bs_sim_time(&sim), 2500.0 * (double)scene.dt, 0.0, SUPPORT_EPS);
+    assert_int_equal(bs_sim_set_excitation(&sim, BS_R(110.0), scene.base_accel), BS_OK);
+    assert_int_equal(bs_sim_step(&sim), BS_OK);
+    copy = scene;
+    copy.frequency = BS_R(110.0);
+    assert_int_equal(bs_scene_check(&copy, &field), BS_E_SCENE);
+    assert_non_null(strstr(field, "bs_sim_set_excitation"));
+    assert_non_null(strstr(field, "build the scene again"));
+}
+
 /* A slider thrown against the left clamp stop: every state the steps
  * produce, some of them a hair inside the stop (Moreau lets a contact be
  * penetrated by about |u| dt), is taken back by bs_sim_set_state. */
@@ -302,11 +360,13 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_version_matches_the_macros),
         cmocka_unit_test(test_a_caller_built_differently_is_refused),
+        cmocka_unit_test(test_an_observer_built_differently_is_refused),
         cmocka_unit_test(test_null_and_uninitialised_sims_are_refused),
         cmocka_unit_test(test_every_status_has_a_text),
         cmocka_unit_test(test_solver_options_are_checked_and_kept),
         cmocka_unit_test(test_solver_options_take_effect),
         cmocka_unit_test(test_beam_at_matches_the_sensor),
+        cmocka_unit_test(test_time_and_a_changed_frequency),
         cmocka_unit_test(test_states_at_a_clamp_stop_can_be_set_again),
         cmocka_unit_test(test_a_slider_that_leaves_the_beam_is_a_fault),
     };

@@ -118,6 +118,34 @@ static void test_excitation_settings_are_restored(void **state)
     assert_int_equal(bs_sim_hash(&copy), bs_sim_hash(&sim));
 }
 
+/* The contact laws as set at run time come back, and the run goes on with
+ * them: with the scene's laws it would part from the saved sim. */
+static void test_contact_laws_are_restored(void **state)
+{
+    bs_real mu, e_n;
+    long k;
+    (void)state;
+    assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    run(&sim, 3000);
+    assert_int_equal(bs_sim_set_contact_laws(&sim, BS_R(0.21), BS_R(0.35)), BS_OK);
+    run(&sim, 500);
+    assert_int_equal(bs_sim_save(&sim, buffer, BS_CHECKPOINT_SIZE), BS_OK);
+    assert_int_equal(bs_sim_init(&copy, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    assert_int_equal(bs_sim_restore(&copy, buffer, BS_CHECKPOINT_SIZE), BS_OK);
+    assert_int_equal(bs_sim_get_contact_laws(&copy, &mu, &e_n), BS_OK);
+    assert_true(mu == BS_R(0.21) && e_n == BS_R(0.35));
+    for (k = 0; k < 5000; ++k) {
+        assert_int_equal(bs_sim_step(&sim), BS_OK);
+        assert_int_equal(bs_sim_step(&copy), BS_OK);
+    }
+    assert_int_equal(bs_sim_hash(&copy), bs_sim_hash(&sim));
+    assert_int_equal(bs_sim_init(&copy, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    assert_int_equal(bs_sim_restore(&copy, buffer, BS_CHECKPOINT_SIZE), BS_OK);
+    assert_int_equal(bs_sim_set_contact_laws(&copy, scene.mu, scene.e_n), BS_OK);
+    run(&copy, 5000);
+    assert_int_not_equal(bs_sim_hash(&copy), bs_sim_hash(&sim));
+}
+
 /* Every refusal leaves the target as it was (its hash and its step count). */
 static void expect_refused(const unsigned char *bytes, size_t size, bs_status want)
 {
@@ -231,8 +259,9 @@ static void test_state_beyond_a_clamp_stop_restores(void **state)
 #define AT_REALS (AT_STEP + 3 * 8)
 enum {
     REAL_X_PCS = 0, REAL_FREQUENCY = 1, REAL_AMPLITUDE = 2, REAL_STEP_ACCEL = 3, REAL_BASE_ACCEL = 4,
-    REAL_Q = 5, REAL_U = 5 + BS_MAX_MODES, REAL_SLIDER = 5 + 2 * BS_MAX_MODES, REAL_X_LOW = 11 + 2 * BS_MAX_MODES,
-    REAL_PERCUSSION = 12 + 2 * BS_MAX_MODES, REAL_RESIDUAL = REAL_PERCUSSION + BS_MAX_CONTACTS * BS_ROWS
+    REAL_MU = 5, REAL_E_N = 6, REAL_Q = 7, REAL_U = 7 + BS_MAX_MODES, REAL_SLIDER = 7 + 2 * BS_MAX_MODES,
+    REAL_X_LOW = 13 + 2 * BS_MAX_MODES, REAL_PERCUSSION = 14 + 2 * BS_MAX_MODES,
+    REAL_RESIDUAL = REAL_PERCUSSION + BS_MAX_CONTACTS * BS_ROWS
 };
 
 /* buffer with real number `index` replaced by value, resealed: refused as
@@ -290,6 +319,10 @@ static void test_edited_checkpoints_break_no_rule(void **state)
     expect_real_refused(REAL_AMPLITUDE, BS_R(13.0), "an amplitude its step amplitude does not match");
     expect_real_refused(REAL_STEP_ACCEL, BS_R(2.0) * saved_real(REAL_STEP_ACCEL), "a step amplitude off");
     expect_real_refused(REAL_X_PCS, BS_R(2.0) * scene.length, "a PCS position off the beam");
+    /* bs_sim_set_contact_laws's rules */
+    expect_real_refused(REAL_MU, BS_R(-0.1), "a negative friction coefficient");
+    expect_real_refused(REAL_MU, (bs_real)NAN, "a friction coefficient not a number");
+    expect_real_refused(REAL_E_N, BS_R(1.5), "a restitution above 1");
     memcpy(forged, buffer, sizeof forged); /* a super-Nyquist phase step behind a matching frequency */
     word64 = (uint64_t)1 << 62;
     memcpy(forged + AT_PHASE_STEP, &word64, 8);
@@ -411,6 +444,7 @@ int main(void)
         cmocka_unit_test(test_restored_run_continues_bit_for_bit),
         cmocka_unit_test(test_transducer_state_is_restored),
         cmocka_unit_test(test_excitation_settings_are_restored),
+        cmocka_unit_test(test_contact_laws_are_restored),
         cmocka_unit_test(test_bad_checkpoints_are_refused_and_change_nothing),
         cmocka_unit_test(test_state_beyond_a_clamp_stop_restores),
         cmocka_unit_test(test_edited_checkpoints_break_no_rule),

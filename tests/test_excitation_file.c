@@ -1,4 +1,4 @@
-/* test_excitation_file.c - a recorded base acceleration (host/lib/excitation_file.c;
+/* test_excitation_file.c - a recorded base acceleration (host/lib/run/excitation_file.c;
  * docs/twin.md, "Recorded base acceleration"): the CSV format with and
  * without a time column, WAV of every sample type read to its exact full
  * scale, the step means of the polyline (exact for constants and ramps, the

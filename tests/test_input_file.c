@@ -1,5 +1,5 @@
 /* test_input_file.c - the one way files are opened for reading
- * (host/lib/input_file.c; docs/robustness.md, "Files a command reads"):
+ * (host/lib/io/input_file.c; docs/robustness.md, "Files a command reads"):
  * a FIFO without a writer is refused at once (not waited for), so are a
  * device and a folder; a file over its kind's bound is refused with its size
  * and the bound; a file that changes between two passes is told apart; lines

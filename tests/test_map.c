@@ -1,5 +1,5 @@
 /* test_map.c - the map's grid, shards, rows, folder identity and result
- * files (host/lib/map_grid.c, map_case.c, map_store.c, map_table.c). The
+ * files (host/lib/map/map_grid.c, map_case.c, map_store.c, map_table.c). The
  * whole command (workers, resume after a kill, shards, refusals) is checked
  * by tests/check_map.sh. Run from the repository root. */
 #define _GNU_SOURCE /* RTLD_NEXT */
@@ -523,7 +523,7 @@ static void test_identity_read_back_refuses_what_map_never_writes(void **state)
         { "repeat = 2", "repeat = 0", ":7: repeat is not an integer in [1, 1000]" },
         { "repeat = 2", "repeat = 2x", "repeat is not an integer" },
         { "repeat = 2\n", "", "no repeat line" },
-        { "format = 1", "format = 2", ":3: a format this version does not read" },
+        { "format = 2", "format = 1", ":3: a format this version does not read" }, /* an older map's columns */
         { "precision = ", "!touch PWNED\nprecision = ", ":5: not a line of an identity" },
     };
     map_grid grid, back;

@@ -1,5 +1,5 @@
 /* test_measured.c - the one reader of the measured-signals format
- * (host/lib/measured_signals.c; docs/twin.md, "Measured signals file"): the
+ * (host/lib/twin/measured_signals.c; docs/twin.md, "Measured signals file"): the
  * header's fields with their units, the rows and a second pass, and the
  * strictness the former readers lacked: a field given twice, a unit misread
  * (kHz as Hz), an unknown key, a free comment holding '=', a gap between

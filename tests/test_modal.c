@@ -1,4 +1,4 @@
-/* test_modal.c - modal data of the beam (host/lib/modal.c) against docs/model.md 8
+/* test_modal.c - modal data of the beam (host/lib/scene/modal.c) against docs/model.md 8
  * and against the defining equations. */
 #include "support.h"
 

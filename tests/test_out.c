@@ -1,5 +1,5 @@
 /* test_out.c - the writers of text that leaves the program in another
- * language (host/lib/out_c.c, out_gnuplot.c, out_json.c, out_text.c). Each is fed the texts that broke out of the
+ * language (host/lib/io/out_c.c, out_gnuplot.c, out_json.c, out_text.c). Each is fed the texts that broke out of the
  * old ad-hoc quoting (a quote, a backslash, a backquote, an @, a comment's
  * end, a line break, every byte) and must give back, when the result is read
  * as its language reads it, the text as given and nothing else.

@@ -1,4 +1,4 @@
-/* test_outcome.c - the outcome classes of a free run (host/lib/outcome.c):
+/* test_outcome.c - the outcome classes of a free run (host/lib/map/outcome.c):
  * each rule of outcome.h on a made-up trajectory that just meets it and one
  * that just misses it, the rules' order, the 1 s averages and the settled
  * figures. (The six scenarios of the papers are classified from real runs
@@ -61,14 +61,14 @@ static void test_a_monotone_walk_to_the_high_branch_is_trivial(void **state)
     assert_int_equal(f.rises, 1);
     assert_int_equal(f.falls, 0);
     assert_true(f.retreat < 1e-9);
-    assert_close("amp_last", f.amp_last, 0.9, 1e-12, 0.0);
+    assert_close("amp_settled", f.amp_settled, 0.9, 1e-12, 0.0);
     /* mean s over the periods that end in the last 10 s: [50, 60] */
     {
         double mean = 0.0;
         int i, n = 0;
         for (i = 4999; i < 6000; ++i, ++n)
             mean += walking_up((double)(i + 1) / RATE);
-        assert_close("s_last", f.s_last, mean / n, 1e-12, 0.0);
+        assert_close("s_settled", f.s_settled, mean / n, 1e-12, 0.0);
     }
     /* a retreat of about 0.01 against the walk: not one way only */
     in = make(60.0, rising_amp, walking_up_with_retreat, 0.3);
@@ -127,7 +127,7 @@ static void test_a_tiny_dying_amplitude_is_self_damping(void **state)
     (void)state;
     assert_int_equal(classify(&in, &f), OUTCOME_SELF_DAMPING);
     assert_true(f.amp_max < OUTCOME_LOW);
-    assert_true(f.amp_last < OUTCOME_DAMPED);
+    assert_true(f.amp_settled < OUTCOME_DAMPED);
     /* low, but not dying below 0.05 h */
     in = make(60.0, low_amp, drifting_down, 0.3);
     assert_int_equal(classify(&in, &f), OUTCOME_OTHER);
@@ -155,7 +155,7 @@ static void test_stop_and_fault_come_first(void **state)
     assert_int_equal(classify(&in, &f), OUTCOME_FAULT);
     in.periods = 0;
     assert_int_equal(classify(&in, &f), OUTCOME_FAULT);
-    assert_true(isnan(f.s_last));
+    assert_true(isnan(f.s_settled));
 }
 
 static double tiny_amp(double time) { (void)time; return 0.01; }
@@ -184,6 +184,34 @@ static void test_names_read_back(void **state)
     assert_string_equal(outcome_label(OUTCOME_SIGNATURE), "signature move");
 }
 
+/* The table (outcome_classes.h): every class a colour "#rrggbb" of its own
+ * and a rule in words, the precedences 1 .. N each once, and the class that
+ * always holds (other) tried last. */
+static void test_the_class_table_is_whole(void **state)
+{
+    int k, j, seen[OUTCOME_CLASSES + 1] = { 0 };
+    (void)state;
+    for (k = 0; k < OUTCOME_CLASSES; ++k) {
+        const char *colour = outcome_colour((outcome_class)k);
+        assert_int_equal(strlen(colour), 7);
+        assert_int_equal(colour[0], '#');
+        assert_int_equal(strspn(colour + 1, "0123456789abcdef"), 6);
+        assert_true(strlen(outcome_rule((outcome_class)k)) > 10);
+        for (j = 0; j < k; ++j)
+            assert_string_not_equal(colour, outcome_colour((outcome_class)j));
+    }
+    assert_string_equal(outcome_colour((outcome_class)OUTCOME_CLASSES), "?");
+#define SEEN(id, name, label, colour, precedence, rule) \
+    assert_true(precedence >= 1 && precedence <= OUTCOME_CLASSES && !seen[precedence]++);
+    OUTCOME_CLASS_TABLE(SEEN)
+#undef SEEN
+#define LAST(id, name, label, colour, precedence, rule) \
+    if (OUTCOME_##id == OUTCOME_OTHER)                   \
+        assert_int_equal(precedence, OUTCOME_CLASSES);
+    OUTCOME_CLASS_TABLE(LAST)
+#undef LAST
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -194,6 +222,7 @@ int main(void)
         cmocka_unit_test(test_stop_and_fault_come_first),
         cmocka_unit_test(test_a_run_without_a_1_s_average_is_other),
         cmocka_unit_test(test_names_read_back),
+        cmocka_unit_test(test_the_class_table_is_whole),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,6 +1,6 @@
 /* test_piezo.c - the piezoelectric transducer (docs/model.md 11): the circuit
  * of core/src/bs_piezo.c, its coupling in core/src/bs_step.c and the modal
- * couplings and checks of host/lib/scene_build.c.
+ * couplings and checks of host/lib/scene/scene_build.c.
  *
  *   1. one mode, linear, no contact, a resistor: the voltage's steady state
  *      against the scheme's own discrete steady state (to rounding), against
@@ -169,7 +169,7 @@ static void solve3(double complex m[3][3], double complex r[3])
 }
 
 /* The frequency the sim's phase advances at: f dt / 2 rounded to 2^-64
- * turns (host/lib/scene_build.c). */
+ * turns (host/lib/scene/scene_build.c). */
 static double effective_frequency(const bs_scene *s)
 {
     return ldexp(2.0 * (double)s->phase_step_half, -64) / (double)s->dt;

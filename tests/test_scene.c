@@ -1376,6 +1376,57 @@ static void test_set_assignment_is_checked_like_a_file_line(void **state)
     assert_int_equal(scene_field_named("excitation", 10, NULL, NULL), -1);
 }
 
+/* The table of derived quantities (scene_origins.h): every factor names a
+ * field of the scene file, every core field the core can refuse comes from
+ * inputs of its own, and the core's text for a changed copy's frequency
+ * finds frequency and dt. */
+static void test_every_core_field_has_its_origin(void **state)
+{
+    static const char *const core_fields[] = {
+#define CORE_FIELD_NAME(kind, name, dim1, dim2, dim3, rule, unit, meaning) #name,
+        BS_SCENE_FIELDS(CORE_FIELD_NAME)
+#undef CORE_FIELD_NAME
+        "stop_min/stop_max", "frequency/phase_step_half (derived together with dt: ...)"
+    };
+    scene_input inputs[32];
+    size_t c;
+    int i, j, k, count;
+    (void)state;
+    for (i = 0; i < scene_origin_count; ++i)
+        for (j = 0; j < SCENE_ORIGIN_FACTORS && scene_origins[i].factors[j].section; ++j) {
+            for (k = 0; scene_fields[k].key; ++k)
+                if (!strcmp(scene_fields[k].section, scene_origins[i].factors[j].section)
+                    && !strcmp(scene_fields[k].key, scene_origins[i].factors[j].key))
+                    break;
+            if (!scene_fields[k].key)
+                fail_msg("row %d (%s): [%s] %s is no field of the scene file", i, scene_origins[i].what,
+                         scene_origins[i].factors[j].section, scene_origins[i].factors[j].key);
+        }
+    for (c = 0; c < sizeof core_fields / sizeof core_fields[0]; ++c) {
+        const size_t n = strcspn(core_fields[c], " ");
+        int named = 0;
+        for (i = 0; i < scene_origin_count && !named; ++i) { /* a row names it, not only the fallback */
+            const char *at = scene_origins[i].core_fields;
+            while (*at && !named) {
+                const size_t m = strcspn(at, " ");
+                named = m == n && !strncmp(at, core_fields[c], n);
+                at += m + strspn(at + m, " ");
+            }
+        }
+        count = scene_origin_inputs(core_fields[c], inputs, 32);
+        if (!named || count < 1)
+            fail_msg("core field %s: no row of scene_origins names it", core_fields[c]);
+    }
+    count = scene_origin_inputs(core_fields[c - 1], inputs, 32);
+    assert_int_equal(count, 2);
+    assert_string_equal(inputs[0].key, "frequency");
+    assert_string_equal(inputs[1].key, "dt");
+    count = scene_origin_inputs("corner", inputs, 32);
+    assert_int_equal(count, 4); /* slot_width, play_ratio, thickness, com_offset: each once */
+    count = scene_origin_inputs("modal", inputs, 32); /* the modal analysis: the beam, the clamps */
+    assert_int_equal(count, 7);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1432,6 +1483,7 @@ int main(void)
         cmocka_unit_test(test_override_refuses_a_bad_value_naming_the_option),
         cmocka_unit_test(test_override_beyond_explicit_limit_names_the_option),
         cmocka_unit_test(test_set_assignment_is_checked_like_a_file_line),
+        cmocka_unit_test(test_every_core_field_has_its_origin),
     };
     return cmocka_run_group_tests(tests, make_tmp_dir, remove_tmp_dir);
 }

@@ -1,5 +1,5 @@
 /* test_shape.c - the core's mode shapes (core/src/bs_shape.c, in bs_real) against
- * the cancellation-free closed form in double (host/lib/modal.c).
+ * the cancellation-free closed form in double (host/lib/scene/modal.c).
  *
  * Tolerances, relative to max |phi_k| (resp. max |phi_k'|) over the beam:
  *   double: the host fit tolerance, 1e-9 (scene_fit_tolerance);
@@ -45,7 +45,8 @@ static void check_all_modes(int modes, int expanded)
             bs_shape_cache cache;
             bs_shape_expand(&scene, (bs_real)fmin(length, fmax(0.0, (double)x + (i % 2 ? 0.99 : -0.99) * reach
                                                                          * ((i % 7) / 6.0))), &cache);
-            bs_shape_expanded(&scene, &cache, bs_shape_offset(&scene, &cache, x), 1, BS_R(2.0) * scene.shape_scale, phi, slope);
+            bs_shape_expanded(scene.n_modes, &cache, bs_shape_offset(&scene, &cache, x), 1, BS_R(2.0) * scene.shape_scale,
+                              phi, slope);
         } else {
             bs_shape_eval(&scene, x, phi, slope);
         }

@@ -1,4 +1,4 @@
-/* test_summary.c - the JSON summaries of run and sweep (host/lib/summary.c).
+/* test_summary.c - the JSON summaries of run and sweep (host/lib/run/run_summary.c).
  *
  * The summaries used to be printf'd, the scene name unescaped: a name with a
  * quote, a backslash or a control character (the file name gives the name
@@ -22,7 +22,7 @@
 
 #include "run.h"
 #include "scene_values.h"
-#include "summary.h"
+#include "run_summary.h"
 #include "sweep.h"
 
 /* static: large */

@@ -1,4 +1,4 @@
-/* test_sweep.c - the quasi-static PCS sweep (host/lib/sweep.c): the grid, the
+/* test_sweep.c - the quasi-static PCS sweep (host/lib/run/sweep.c): the grid, the
  * per-point numbers against a plain bs_sim loop written from docs/model.md 6,
  * continuation from rest, the sign of v_mean, determinism and bad options. */
 #include "support.h"

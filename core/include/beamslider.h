@@ -38,9 +38,9 @@ extern "C" {
 /* Version (docs/CHANGELOG.md). Until 1.0, a minor release may change the API
  * and the layout of bs_sim; BS_BUILD_TAG carries major and minor. */
 #define BS_VERSION_MAJOR 0
-#define BS_VERSION_MINOR 7
+#define BS_VERSION_MINOR 8
 #define BS_VERSION_PATCH 0
-#define BS_VERSION_STRING "0.7.0"
+#define BS_VERSION_STRING "0.8.0"
 #define BS_VERSION_NUMBER (BS_VERSION_MAJOR * 10000 + BS_VERSION_MINOR * 100 + BS_VERSION_PATCH)
 
 /* The build configuration as this translation unit sees it: version,
@@ -74,7 +74,16 @@ bs_status bs_build_check_(uint32_t tag, size_t sim_size, size_t scene_size);
 /* Checks every field of a scene: BS_OK, BS_E_NULL, BS_E_BUILD, BS_E_SCENE (a
  * field out of its range) or BS_E_UNSTABLE (omega_max dt >= 2). On
  * BS_E_SCENE and BS_E_UNSTABLE, *field (if field is not NULL) names the
- * offending field. */
+ * offending field.
+ *
+ * A scene's fields are derived together (frequency and dt make
+ * phase_step_half; dt makes mode_gain and the transducer's factors; the
+ * modal data come from the beam), so a changed copy of a built scene is
+ * refused: for another excitation frequency or amplitude keep the scene
+ * and call bs_sim_set_excitation on the sim (any time, the phase goes on);
+ * for another dt, or anything else, build the scene again (libbeamslider-
+ * host: bs_host_scene_load with an override such as "numerics.dt=1e-5",
+ * or bs_host_scene_set; the command line: beamslider gen). */
 #define bs_scene_check(scene, field) bs_scene_check_(BS_BUILD_TAG, sizeof(bs_scene), (scene), (field))
 bs_status bs_scene_check_(uint32_t tag, size_t scene_size, const bs_scene *scene, const char **field);
 
@@ -133,6 +142,20 @@ bs_status bs_sim_set_excitation(bs_sim *sim, bs_real frequency, bs_real amplitud
  * pointer may be NULL. Returns BS_OK, BS_E_NULL or BS_E_UNINITIALISED. */
 bs_status bs_sim_get_excitation(const bs_sim *sim, bs_real *frequency, bs_real *amplitude);
 
+/* The contact laws from the next step on: Coulomb friction mu (finite,
+ * >= 0) and Newton's normal restitution e_N (in [0, 1]) at the slot's
+ * corners; bs_sim_init takes the scene's. A twin that estimates its plant's
+ * friction sets it here while it runs (docs/twin.md). A core built without
+ * friction (BS_WITH_FRICTION 0: a compiled scene with mu = 0) takes only
+ * mu = 0, one without restitution only e_N = 0. Returns BS_OK, BS_E_NULL,
+ * BS_E_UNINITIALISED or BS_E_ARGUMENT (nothing changes). The laws are part
+ * of a checkpoint. */
+bs_status bs_sim_set_contact_laws(bs_sim *sim, bs_real mu, bs_real e_n);
+
+/* The contact laws in use; either pointer may be NULL. Returns BS_OK,
+ * BS_E_NULL or BS_E_UNINITIALISED. */
+bs_status bs_sim_get_contact_laws(const bs_sim *sim, bs_real *mu, bs_real *e_n);
+
 /* The mean base acceleration the last step used [m/s^2] (0 before the first
  * step; NaN for a NULL or uninitialised sim). */
 bs_real bs_sim_base_acceleration(const bs_sim *sim);
@@ -184,6 +207,11 @@ bs_real bs_sim_phase(const bs_sim *sim);
 /* Steps taken since bs_sim_init. 0 for a NULL or uninitialised sim. */
 uint64_t bs_sim_steps(const bs_sim *sim);
 
+/* Simulated time since bs_sim_init [s]: bs_sim_steps(sim) times the scene's
+ * dt, multiplied (never summed step by step, so it does not drift); in
+ * float it is exact to 2^-24 relative. NaN for a NULL or uninitialised sim. */
+bs_real bs_sim_time(const bs_sim *sim);
+
 /* FNV-1a hash of the complete dynamic state (bit patterns), for determinism
  * checks. 0 for a NULL or uninitialised sim. */
 uint32_t bs_sim_hash(const bs_sim *sim);
@@ -193,9 +221,9 @@ uint32_t bs_sim_hash(const bs_sim *sim);
 uint32_t bs_scene_hash(const bs_scene *scene);
 
 /* Checkpoints: the complete state of a sim (step count, excitation phase and
- * settings, compensated parts, warm start, mode-shape caches, transducer) as
- * BS_CHECKPOINT_SIZE bytes in the caller's buffer, e.g. for flash, a file or
- * a twin that rewinds. The bytes carry a format mark, this build's tag
+ * settings, contact laws, compensated parts, warm start, mode-shape caches,
+ * transducer) as BS_CHECKPOINT_SIZE bytes in the caller's buffer, e.g. for
+ * flash, a file or a twin that rewinds. The bytes carry a format mark, this build's tag
  * (version, precision, switches, modes), the scene's hash (bs_scene_hash)
  * and a checksum; they are in the machine's byte order (another byte order is
  * refused, not converted). A sim restored from a checkpoint continues bit for
@@ -203,7 +231,7 @@ uint32_t bs_scene_hash(const bs_scene *scene);
  * setting, not state: they are neither saved nor restored. Layout:
  * docs/twin.md. */
 #define BS_CHECKPOINT_REALS                                                                   \
-    (5 + 2 * BS_MAX_MODES + 6 + 1 + BS_ROWS * BS_MAX_CONTACTS + 1                           \
+    (5 + 2 + 2 * BS_MAX_MODES + 6 + 1 + BS_ROWS * BS_MAX_CONTACTS + 1                       \
      + 2 * (1 + BS_MAX_MODES * BS_SHAPE_TERMS) + 5 * BS_WITH_PIEZO)
 #define BS_CHECKPOINT_SIZE ((size_t)(6 * 4 + 5 * 4 + 3 * 8 + 4) + (size_t)BS_CHECKPOINT_REALS * sizeof(bs_real))
 

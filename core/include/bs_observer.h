@@ -26,6 +26,7 @@
 #define BS_OBSERVER_H
 
 #include "beamslider.h"
+#include "bs_lockin_layout.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -144,11 +145,6 @@ typedef struct bs_observer_estimate {
     int health;             /* 0, or BS_OBSERVER_HEALTH_* bits */
 } bs_observer_estimate;
 
-/* The lock-in's two low-pass stages of one product. */
-typedef struct bs_lowpass2 {
-    bs_real stage[2];
-} bs_lowpass2;
-
 /* PRIVATE members (core/src/bs_observer.c). */
 typedef struct bs_observer {
     uint32_t ready;
@@ -160,8 +156,7 @@ typedef struct bs_observer {
     bs_real past_signal[BS_OBSERVER_MAX_LATENCY + 1]; /* the twin's signal, newest at head */
     bs_real past_accel[BS_OBSERVER_MAX_LATENCY + 1];  /* a_k, aligned with it */
     bs_real past_deflection[BS_OBSERVER_MAX_LATENCY + 1]; /* the twin's w(4L/7), aligned with it */
-    bs_real quadrature;                               /* leaky integral of the aligned a_k [m/s] */
-    bs_lowpass2 ref_aa, ref_bb, ref_b;                /* <a^2>, <b^2>, <b> */
+    bs_lockin_reference reference;                    /* the aligned a_k and its quadrature */
     bs_lowpass2 meas_a, meas_b;                       /* <y a>, <y b> */
     bs_lowpass2 twin_a, twin_b;                       /* <y^ a>, <y^ b> */
     bs_lowpass2 defl_a, defl_b;                       /* <w a>, <w b>: the twin's w(4L/7) */
@@ -177,15 +172,29 @@ typedef struct bs_observer {
 /* The default options. */
 bs_observer_options bs_observer_defaults(void);
 
+/* The observer's table sizes as this translation unit sees them: with the
+ * core's build tag and the sizes of bs_observer and bs_observer_gains they
+ * go to the library through bs_observer_init (the zlib inflateInit_ pattern,
+ * as bs_sim_init does), so a firmware compiled with another
+ * BS_OBSERVER_MAPS or BS_OBSERVER_MAX_LATENCY than its core is refused with
+ * BS_E_BUILD instead of reading its gains out of place. */
+#define BS_OBSERVER_TAG (((uint32_t)(BS_OBSERVER_MAPS) << 16) | ((uint32_t)(BS_OBSERVER_MAX_LATENCY) & 0xffffu))
+
 /* Starts observing the twin sim (initialised, free model, the scene the
  * gains were designed for: its mode count, and a transducer with a resistor
  * load for BS_SIGNAL_VOLTAGE); options NULL: the defaults. The sim's state
  * is the initial estimate (start it on the known side of the beam: s and
- * 1 - s respond alike). Returns BS_OK, BS_E_NULL, BS_E_UNINITIALISED (sim)
+ * 1 - s respond alike). Returns BS_OK, BS_E_NULL, BS_E_BUILD (this program
+ * and the library built with another precision, switches, BS_OBSERVER_MAPS
+ * or BS_OBSERVER_MAX_LATENCY: nothing is written), BS_E_UNINITIALISED (sim)
  * or BS_E_ARGUMENT (gains or options out of range, a PCS sim, gains of
- * another scene); after an error the observer is not initialised. */
-bs_status bs_observer_init(bs_observer *obs, const bs_sim *sim, const bs_observer_gains *gains,
-                           const bs_observer_options *options);
+ * another scene); after another error the observer is not initialised. */
+#define bs_observer_init(obs, sim, gains, options)                                                  \
+    bs_observer_init_(BS_BUILD_TAG, BS_OBSERVER_TAG, sizeof(bs_observer), sizeof(bs_observer_gains), \
+                      (obs), (sim), (gains), (options))
+bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer_size, size_t gains_size,
+                            bs_observer *obs, const bs_sim *sim, const bs_observer_gains *gains,
+                            const bs_observer_options *options);
 
 /* One step: advances sim by bs_sim_step_measured(sim, base_accel), then
  * corrects it with the measurement y_k (units of gains->signal). sim must

@@ -32,8 +32,9 @@ typedef struct bs_contact_set {
 #endif
     bs_real beam_coef[BS_MAX_CONTACTS][BS_ROWS][2]; /* W_r,k = coef[0] phi_k + coef[1] phi'_k (0 at a stop) */
     bs_real dir_slider[BS_ROWS * BS_MAX_CONTACTS][BS_SLIDER_DOF]; /* W column, slider part */
-    bs_real phi[BS_MAX_CONTACTS][BS_MAX_MODES];  /* phi_k at active corner a (unused at a stop) */
-    bs_real slope[BS_MAX_CONTACTS][BS_MAX_MODES]; /* phi'_k there [1/(m sqrt(kg))] */
+    bs_real phi[BS_CORNERS][BS_MAX_MODES];       /* phi_k at active corner a (corners come first in
+                                                    the set, the stops after them) */
+    bs_real slope[BS_CORNERS][BS_MAX_MODES];     /* phi'_k there [1/(m sqrt(kg))] */
     bs_real delassus[BS_ROWS * BS_MAX_CONTACTS][BS_ROWS * BS_MAX_CONTACTS]; /* G = W^T M^-1 W */
 #if BS_WITH_SUBSPACE
     bs_real system[BS_ROWS * BS_MAX_CONTACTS][BS_ROWS * BS_MAX_CONTACTS + 1]; /* active-set [A | b], 3+ contacts */
@@ -71,6 +72,8 @@ typedef struct bs_step_constants {
     bs_real stretch_rows[BS_MAX_MODES]; /* sum_j |S_ij| (sqrt(dt) S), the exact stability bound */
     bs_real stretch_limit;              /* a step with 0 <= E below this is within the stability
                                            limit (core/src/bs_beam.c); -1: no such shortcut */
+    int stretch_parity;                 /* 1: S_ij = 0 wherever i + j is odd (modes alternately
+                                           symmetric and antisymmetric): half the products */
 #endif
     bs_real stiffness_limit;            /* 4 / dt^2 [1/s^2], less the open patch's stiffness */
     bs_real corner[BS_CORNERS][2];      /* r_CP,i */

@@ -24,6 +24,18 @@ BS_INLINE bs_real bs_beam_stretch(const bs_step_constants *k, int n, const bs_re
 {
     bs_real energy = BS_R(0.0);
     int i, j;
+#ifndef BS_SCENE_STRETCH_USED
+    if (k->stretch_parity) { /* a run-time scene of symmetric and antisymmetric modes: S_ij = 0 for odd i + j */
+        for (i = 0; i < n; ++i) {
+            bs_real acc = BS_R(0.0);
+            for (j = i & 1; j < n; j += 2)
+                acc += k->stretch[i][j] * q[j];
+            sq[i] = acc;
+            energy += q[i] * acc;
+        }
+        return energy;
+    }
+#endif
     for (i = 0; i < n; ++i) {
         bs_real acc = BS_R(0.0);
         for (j = 0; j < n; ++j)

@@ -6,7 +6,8 @@
  *   u32 bs_scene_hash, u32 BS_CHECKPOINT_SIZE,
  *   u32 model, u32 report.active, sweeps, systems, converged,
  *   u64 step, phase, phase_step_half,
- *   bs_real x_pcs, excitation[2], step_accel, base_accel, q_beam[BS_MAX_MODES],
+ *   bs_real x_pcs, excitation[2], step_accel, base_accel, contact laws mu and
+ *     e_N (bs_sim_set_contact_laws), q_beam[BS_MAX_MODES],
  *     u_beam[BS_MAX_MODES], slider[3], slider_velocity[3], x_c_low,
  *     percussion[BS_MAX_CONTACTS][BS_ROWS], report.residual,
  *     2 x (shape cache centre, coef[BS_MAX_MODES][BS_SHAPE_TERMS]),
@@ -23,7 +24,7 @@
 #include "bs_sim_internal.h"
 
 #define CHECKPOINT_MAGIC 0x50435342u /* "BSCP" read as a little-endian u32 */
-#define CHECKPOINT_FORMAT 1u
+#define CHECKPOINT_FORMAT 2u /* 2: the contact laws (0.8.0) */
 #define FNV_OFFSET 2166136261u
 #define FNV_PRIME 16777619u
 
@@ -106,7 +107,7 @@ static void u32(cursor *c, uint32_t *value)
 typedef struct saved_state {
     uint32_t model, counts[4]; /* report.active, sweeps, systems, converged */
     uint64_t step, phase, phase_step_half;
-    bs_real x_pcs, excitation[2], step_accel, base_accel;
+    bs_real x_pcs, excitation[2], step_accel, base_accel, laws[2]; /* laws: mu, e_N */
     bs_real q_beam[BS_MAX_MODES], u_beam[BS_MAX_MODES];
     bs_real slider[3], slider_velocity[3], x_c_low;
     bs_real percussion[BS_MAX_CONTACTS][BS_ROWS];
@@ -130,6 +131,7 @@ static void state(cursor *c, saved_state *s)
     reals(c, s->excitation, 2);
     reals(c, &s->step_accel, 1);
     reals(c, &s->base_accel, 1);
+    reals(c, s->laws, 2);
     reals(c, s->q_beam, BS_MAX_MODES);
     reals(c, s->u_beam, BS_MAX_MODES);
     reals(c, s->slider, 3);
@@ -175,6 +177,8 @@ static void save_state(const bs_sim *sim, saved_state *s)
     copy_reals(s->excitation, sim->excitation, 2);
     s->step_accel = sim->step_accel;
     s->base_accel = sim->base_accel;
+    s->laws[0] = sim->k.mu;
+    s->laws[1] = sim->k.e_n;
     copy_reals(s->q_beam, sim->q_beam, BS_MAX_MODES);
     copy_reals(s->u_beam, sim->u_beam, BS_MAX_MODES);
     copy_reals(s->slider, sim->slider, 3);
@@ -207,6 +211,8 @@ static void load_state(bs_sim *sim, const saved_state *s)
     copy_reals(sim->excitation, s->excitation, 2);
     sim->step_accel = s->step_accel;
     sim->base_accel = s->base_accel;
+    sim->k.mu = s->laws[0];
+    sim->k.e_n = s->laws[1];
     copy_reals(sim->q_beam, s->q_beam, BS_MAX_MODES);
     copy_reals(sim->u_beam, s->u_beam, BS_MAX_MODES);
     copy_reals(sim->slider, s->slider, 3);
@@ -326,7 +332,8 @@ static int acceptable_transducer(const bs_scene *scene, const bs_real *piezo)
 #endif
 
 /* A decoded state the sim can take, by the rules the setters apply
- * (bs_sim_set_state, bs_sim_set_excitation, bs_sim_set_pcs_position) and the
+ * (bs_sim_set_state, bs_sim_set_excitation, bs_sim_set_pcs_position,
+ * bs_sim_set_contact_laws) and the
  * invariants the step keeps: the model the sim was initialised with; the
  * beam and slider state finite, x_C in the stops band; the excitation one
  * the setter accepts with the phase step and step amplitude it derives; a
@@ -351,7 +358,8 @@ static int acceptable(const bs_sim *sim, const saved_state *s)
         return 0;
     if (!finite(&s->x_pcs, 1) || !(s->x_pcs >= BS_R(0.0) && s->x_pcs <= scene->length) || !finite(&s->base_accel, 1)
         || !finite(s->excitation, 2) || !finite(&s->step_accel, 1)
-        || !bs_excitation_acceptable(sim, s->excitation[0], s->excitation[1], s->phase_step_half, s->step_accel))
+        || !bs_excitation_acceptable(sim, s->excitation[0], s->excitation[1], s->phase_step_half, s->step_accel)
+        || !bs_contact_laws_acceptable(s->laws[0], s->laws[1]))
         return 0;
 #if BS_WITH_PIEZO
     return acceptable_transducer(scene, s->piezo);

@@ -106,7 +106,7 @@ typedef struct corner_point {
 /* Appends corner (its point p, zeta its side of the beam) to the active
  * set: its phi and phi', the coefficients of its rows' beam parts and their
  * slider parts. d_z = z_P - w - zeta h/2, already found in contact. */
-BS_INLINE void add_corner(const bs_scene *scene, const bs_step_constants *k, const bs_shape_cache *cache, int corner,
+BS_INLINE void add_corner(int n, const bs_step_constants *k, const bs_shape_cache *cache, int corner,
                           bs_real zeta, bs_real d_z, const corner_point *p, const bs_real (*warm)[BS_ROWS],
                           bs_contact_set *set)
 {
@@ -124,7 +124,7 @@ BS_INLINE void add_corner(const bs_scene *scene, const bs_step_constants *k, con
     const int a = set->count++;
 
     set->id[a] = corner;
-    bs_shape_expanded(scene, cache, p->t, p->on_beam, k->slope_scale, set->phi[a], set->slope[a]);
+    bs_shape_expanded(n, cache, p->t, p->on_beam, k->slope_scale, set->phi[a], set->slope[a]);
     set->percussion[BS_ROWS * a] = warm[corner][0]; /* the warm start: its last percussion */
 #if BS_WITH_FRICTION
     set->percussion[BS_ROWS * a + 1] = warm[corner][1];
@@ -177,7 +177,7 @@ BS_INLINE void locate_corner(const bs_step_constants *k, const bs_contact_frame 
  * the wrong side of the beam's axis (zeta d_z < -h/2: more than h/2 into
  * the beam, which no step of a held contact reaches; the slider has left
  * the beam), else 0. */
-BS_INLINE int side_of_slot(const bs_scene *scene, const bs_step_constants *k, const bs_contact_frame *frame,
+BS_INLINE int side_of_slot(int n, const bs_scene *scene, const bs_step_constants *k, const bs_contact_frame *frame,
                         bs_shape_cache *cache, int top_id, int bottom_id, bs_real cos_beta, bs_real sin_beta,
                         bs_contact_set *set)
 {
@@ -199,7 +199,7 @@ BS_INLINE int side_of_slot(const bs_scene *scene, const bs_step_constants *k, co
      * for both corners (0 inside a clamp, which moves with the base) */
     for (m = 0; m < BS_SHAPE_TERMS; ++m)
         sum[m] = BS_R(0.0);
-    for (i = 0; i < BS_NMODES(scene); ++i)
+    for (i = 0; i < n; ++i)
         for (m = 0; m < BS_SHAPE_TERMS; ++m)
             sum[m] += frame->q_beam[i] * cache->coef[i][m];
     bs_shape_taylor(sum, top.t, &w, &dw);
@@ -214,12 +214,12 @@ BS_INLINE int side_of_slot(const bs_scene *scene, const bs_step_constants *k, co
     if (d_top - hh * top.w_slope * top.w_slope < BS_R(0.0)) {
         if (d_top + hh < BS_R(0.0))
             return 1;
-        add_corner(scene, k, cache, top_id, BS_R(1.0), d_top, &top, frame->warm, set);
+        add_corner(n, k, cache, top_id, BS_R(1.0), d_top, &top, frame->warm, set);
     }
     if (-d_bottom - hh * bottom.w_slope * bottom.w_slope < BS_R(0.0)) {
         if (-d_bottom + hh < BS_R(0.0))
             return 1;
-        add_corner(scene, k, cache, bottom_id, BS_R(-1.0), d_bottom, &bottom, frame->warm, set);
+        add_corner(n, k, cache, bottom_id, BS_R(-1.0), d_bottom, &bottom, frame->warm, set);
     }
     return 0;
 }
@@ -264,8 +264,8 @@ BS_INLINE void rotation(bs_real beta, bs_real *cos_beta, bs_real *sin_beta)
 }
 #endif
 
-bs_status bs_contact_detect(const bs_scene *scene, const bs_step_constants *k, const bs_contact_frame *frame,
-                            bs_contact_set *set)
+BS_INLINE bs_status detect(int n, const bs_scene *scene, const bs_step_constants *k, const bs_contact_frame *frame,
+                           bs_contact_set *set)
 {
     bs_real cos_beta = BS_R(1.0), sin_beta = BS_R(0.0);
 
@@ -273,8 +273,8 @@ bs_status bs_contact_detect(const bs_scene *scene, const bs_step_constants *k, c
     rotation(frame->beta, &cos_beta, &sin_beta);
 #endif
     set->count = 0; /* in the order found: P1, P2, P4, P3, the stops */
-    if (side_of_slot(scene, k, frame, &frame->cache[0], 0, 1, cos_beta, sin_beta, set)
-        || side_of_slot(scene, k, frame, &frame->cache[1], 3, 2, cos_beta, sin_beta, set))
+    if (side_of_slot(n, scene, k, frame, &frame->cache[0], 0, 1, cos_beta, sin_beta, set)
+        || side_of_slot(n, scene, k, frame, &frame->cache[1], 3, 2, cos_beta, sin_beta, set))
         return BS_E_ESCAPED;
     if (frame->stops) {
         if (frame->x_stops < k->stop_min)
@@ -285,16 +285,23 @@ bs_status bs_contact_detect(const bs_scene *scene, const bs_step_constants *k, c
     return BS_OK;
 }
 
+bs_status bs_contact_detect(const bs_scene *scene, const bs_step_constants *k, const bs_contact_frame *frame,
+                            bs_contact_set *set)
+{
+    BS_MODES_SWITCH(BS_NMODES(scene), return detect(MODES, scene, k, frame, set));
+    return BS_OK; /* not reached */
+}
+
 /* The products of two corners' shape vectors a and b over the modes:
  * dot[0] = phi_a . M^-1 phi_b, [1] phi_a . M^-1 phi'_b, [2] phi'_a . M^-1
  * phi_b, [3] phi'_a . M^-1 phi'_b (M^-1: the mode gains, 1 when explicit). */
-BS_INLINE void cross_products(const bs_scene *scene, const bs_step_constants *k, const bs_contact_set *set, int a,
-                           int b, bs_real *dot)
+BS_INLINE void cross_products(int n, const bs_step_constants *k, const bs_contact_set *set, int a, int b,
+                              bs_real *dot)
 {
     const bs_real *phi_a = set->phi[a], *slope_a = set->slope[a], *phi_b = set->phi[b], *slope_b = set->slope[b];
     bs_real pp = BS_R(0.0), ps = BS_R(0.0), sp = BS_R(0.0), ss = BS_R(0.0);
     int i;
-    for (i = 0; i < BS_NMODES(scene); ++i) {
+    for (i = 0; i < n; ++i) {
         const bs_real gp = MODE_GAIN(k, i) * phi_a[i], gs = MODE_GAIN(k, i) * slope_a[i];
         pp += gp * phi_b[i];
         ps += gp * slope_b[i];
@@ -387,7 +394,7 @@ BS_INLINE void free_velocity(const bs_step_constants *k, bs_contact_set *set, in
 
 /* One corner in contact (most contact steps): its velocity and self
  * products in one pass. */
-static void problem_of_one(const bs_scene *scene, const bs_step_constants *k, bs_contact_set *set,
+BS_INLINE void problem_of_one(int n, const bs_step_constants *k, bs_contact_set *set,
                            const bs_real *u_beam, const bs_real *u_slider, const bs_real *u_beam_before,
                            const bs_real *u_slider_before)
 {
@@ -395,7 +402,7 @@ static void problem_of_one(const bs_scene *scene, const bs_step_constants *k, bs
     shape_velocities v = { { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) } };
     bs_real dot[4] = { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) };
     int i;
-    for (i = 0; i < BS_NMODES(scene); ++i) {
+    for (i = 0; i < n; ++i) {
         const bs_real gp = MODE_GAIN(k, i) * phi[i], gs = MODE_GAIN(k, i) * slope[i];
         v.at[0] += phi[i] * u_beam[i];
         v.at[1] += slope[i] * u_beam[i];
@@ -416,7 +423,7 @@ static void problem_of_one(const bs_scene *scene, const bs_step_constants *k, bs
 /* Two corners in contact (the rest but a few): velocities in one pass over
  * the modes, then self and cross products in another (18 sums in one pass
  * would not fit a Cortex-M4F's 32 registers: they spilled). */
-static void problem_of_two(const bs_scene *scene, const bs_step_constants *k, bs_contact_set *set,
+BS_INLINE void problem_of_two(int n, const bs_step_constants *k, bs_contact_set *set,
                            const bs_real *u_beam, const bs_real *u_slider, const bs_real *u_beam_before,
                            const bs_real *u_slider_before)
 {
@@ -427,7 +434,7 @@ static void problem_of_two(const bs_scene *scene, const bs_step_constants *k, bs
     bs_real bb[4] = { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) };
     bs_real ba[4] = { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) };
     int i;
-    for (i = 0; i < BS_NMODES(scene); ++i) {
+    for (i = 0; i < n; ++i) {
         va.at[0] += phi_a[i] * u_beam[i];
         va.at[1] += slope_a[i] * u_beam[i];
         vb.at[0] += phi_b[i] * u_beam[i];
@@ -440,7 +447,7 @@ static void problem_of_two(const bs_scene *scene, const bs_step_constants *k, bs
 #endif
     }
     (void)u_beam_before;
-    for (i = 0; i < BS_NMODES(scene); ++i) {
+    for (i = 0; i < n; ++i) {
         const bs_real gp = MODE_GAIN(k, i) * phi_b[i], gs = MODE_GAIN(k, i) * slope_b[i];
         aa[0] += MODE_GAIN(k, i) * phi_a[i] * phi_a[i];
         aa[1] += MODE_GAIN(k, i) * phi_a[i] * slope_a[i];
@@ -462,19 +469,18 @@ static void problem_of_two(const bs_scene *scene, const bs_step_constants *k, bs
     delassus_block(k, set, 1, 0, ba);
 }
 
-void bs_contact_problem(const bs_scene *scene, const bs_step_constants *k, bs_contact_set *set,
-                        const bs_real *u_beam, const bs_real *u_slider, const bs_real *u_beam_before,
-                        const bs_real *u_slider_before)
+BS_INLINE void problem(int n, const bs_step_constants *k, bs_contact_set *set, const bs_real *u_beam,
+                       const bs_real *u_slider, const bs_real *u_beam_before, const bs_real *u_slider_before)
 {
     const int corners = (set->count > 0 && set->id[0] < BS_CORNERS) + (set->count > 1 && set->id[1] < BS_CORNERS);
     int a, b, i;
 
     if (set->count == 1 && corners == 1) {
-        problem_of_one(scene, k, set, u_beam, u_slider, u_beam_before, u_slider_before);
+        problem_of_one(n, k, set, u_beam, u_slider, u_beam_before, u_slider_before);
         return;
     }
     if (set->count == 2 && corners == 2) {
-        problem_of_two(scene, k, set, u_beam, u_slider, u_beam_before, u_slider_before);
+        problem_of_two(n, k, set, u_beam, u_slider, u_beam_before, u_slider_before);
         return;
     }
     /* stops, three or more contacts: pair by pair */
@@ -483,7 +489,7 @@ void bs_contact_problem(const bs_scene *scene, const bs_step_constants *k, bs_co
         shape_velocities v = { { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) } };
         bs_real dot[4];
         if (corner)
-            for (i = 0; i < BS_NMODES(scene); ++i) {
+            for (i = 0; i < n; ++i) {
                 v.at[0] += set->phi[a][i] * u_beam[i];
                 v.at[1] += set->slope[a][i] * u_beam[i];
 #if BS_WITH_RESTITUTION
@@ -495,10 +501,17 @@ void bs_contact_problem(const bs_scene *scene, const bs_step_constants *k, bs_co
         for (b = 0; b <= a; ++b) {
             const int both = corner && set->id[b] < BS_CORNERS;
             if (both)
-                cross_products(scene, k, set, a, b, dot);
+                cross_products(n, k, set, a, b, dot);
             delassus_block(k, set, a, b, both ? dot : (const bs_real *)0);
         }
     }
+}
+
+void bs_contact_problem(const bs_scene *scene, const bs_step_constants *k, bs_contact_set *set,
+                        const bs_real *u_beam, const bs_real *u_slider, const bs_real *u_beam_before,
+                        const bs_real *u_slider_before)
+{
+    BS_MODES_SWITCH(BS_NMODES(scene), problem(MODES, k, set, u_beam, u_slider, u_beam_before, u_slider_before));
 }
 
 /* Contact a's push on the slider and the coefficients of phi and phi' in
@@ -525,8 +538,8 @@ BS_INLINE void percussion_of(const bs_contact_set *set, int a, bs_real *along_ph
 #endif
 }
 
-void bs_contact_apply(const bs_scene *scene, const bs_step_constants *k, const bs_contact_set *set,
-                      bs_real *u_beam, bs_real *u_slider)
+BS_INLINE void apply(int n, const bs_step_constants *k, const bs_contact_set *set, bs_real *u_beam,
+                     bs_real *u_slider)
 {
     bs_real push[BS_SLIDER_DOF] = { BS_R(0.0) }, along_phi[2], along_slope[2];
     int a, i;
@@ -534,14 +547,14 @@ void bs_contact_apply(const bs_scene *scene, const bs_step_constants *k, const b
     if (set->count == 2 && set->id[1] < BS_CORNERS) { /* two corners: one pass over the modes */
         percussion_of(set, 0, &along_phi[0], &along_slope[0], push);
         percussion_of(set, 1, &along_phi[1], &along_slope[1], push);
-        for (i = 0; i < BS_NMODES(scene); ++i)
+        for (i = 0; i < n; ++i)
             u_beam[i] += MODE_GAIN(k, i) * ((along_phi[0] * set->phi[0][i] + along_slope[0] * set->slope[0][i])
                                             + (along_phi[1] * set->phi[1][i] + along_slope[1] * set->slope[1][i]));
     } else {
         for (a = 0; a < set->count; ++a) {
             percussion_of(set, a, &along_phi[0], &along_slope[0], push);
             if (set->id[a] < BS_CORNERS)
-                for (i = 0; i < BS_NMODES(scene); ++i)
+                for (i = 0; i < n; ++i)
                     u_beam[i] += MODE_GAIN(k, i) * (along_phi[0] * set->phi[a][i] + along_slope[0] * set->slope[a][i]);
         }
     }
@@ -550,4 +563,10 @@ void bs_contact_apply(const bs_scene *scene, const bs_step_constants *k, const b
 #if BS_WITH_ROTATION
     u_slider[2] += k->inertia_inv * push[2];
 #endif
+}
+
+void bs_contact_apply(const bs_scene *scene, const bs_step_constants *k, const bs_contact_set *set,
+                      bs_real *u_beam, bs_real *u_slider)
+{
+    BS_MODES_SWITCH(BS_NMODES(scene), apply(MODES, k, set, u_beam, u_slider));
 }

@@ -14,4 +14,36 @@
 #define BS_INLINE static inline
 #endif
 
+/* BS_MODES_SWITCH(count, statement): statement with the identifier MODES, the
+ * mode count, a compile-time constant: the scene's with a compiled scene,
+ * else count itself for 1..8 modes (one copy of the statement each), so that
+ * a run-time scene's loops over its modes are unrolled too, as a compiled
+ * scene's are (docs/design.md 4); count as a variable beyond. */
+#ifdef BS_SCENE_MODES
+#define BS_MODES_SWITCH(count, statement) \
+    do {                                  \
+        enum { MODES = BS_SCENE_MODES };  \
+        (void)(count);                    \
+        statement;                        \
+    } while (0)
+#else
+#define BS_MODES_CASE(k, statement) \
+    case k: {                        \
+        enum { MODES = k };          \
+        statement;                   \
+    } break;
+#define BS_MODES_SWITCH(count, statement)                                                              \
+    do {                                                                                               \
+        switch (count) {                                                                               \
+            BS_MODES_CASE(1, statement) BS_MODES_CASE(2, statement) BS_MODES_CASE(3, statement)         \
+            BS_MODES_CASE(4, statement) BS_MODES_CASE(5, statement) BS_MODES_CASE(6, statement)         \
+            BS_MODES_CASE(7, statement) BS_MODES_CASE(8, statement)                                    \
+        default: {                                                                                     \
+            const int MODES = (count);                                                                 \
+            statement;                                                                                 \
+        } break;                                                                                       \
+        }                                                                                              \
+    } while (0)
+#endif
+
 #endif

@@ -18,13 +18,16 @@
  *    corrects the present state by the correction it asks for there,
  *    carried forward d steps. The slider is moved with the beam under it
  *    (correct_beam below), as the attached model assumes.
- * 4. Lock-in against a (alpha = dt / tau, two first-order stages each):
+ * 4. Lock-in against a (core/src/bs_lockin.c; <x>: two first-order
+ *    low-pass stages of time constant tau, alpha = dt / tau):
  *      b       <- (1 - dt/tau) b + dt a      leaky integral: a's quadrature
  *      b~      =  b - <b>                    (no offset)
- *      kappa^2 =  <a^2> / <b~^2>             ~ Omega^2 + 1/tau^2
- *      H_y     =  (<y a> - j kappa <y b~>) / <a^2>
+ *      c       =  <a b~> / <a^2>             b~'s part in phase with a
+ *      kappa^2 =  <a^2> / (<b~^2> - c <a b~>) ~ Omega^2: b~ - c a, orthogonal to a
+ *      H_y     =  (<y a> - j kappa (<y b~> - c <y a>)) / <a^2>
  *    H_y is the response per unit base acceleration at the excitation, as a
- *    complex amplitude (y = Re(H_y A e^{j Omega t}) for a = A cos Omega t).
+ *    complex amplitude (y = Re(H_y A e^{j Omega t}) for a = A cos Omega t),
+ *    exact for any phase (b~ itself lags a by less than 90 degrees).
  *    H_m of the measurement, H_t of the aligned prediction, H_w of the twin's
  *    w(4L/7): amplitude = |H_w| sqrt(2 <a^2>).
  * 5. Slider position, from a response map (host/lib/observer_design.c):
@@ -44,7 +47,7 @@
  *      ds/dt = clamp(position_gain (s_error -+ deadband), -rate, rate)
  *    within the clamp stops, never across s = 1/2, and only while
  *    s_sigma < sigma_hold and the measured excitation (amplitude
- *    sqrt(2 <a^2>), frequency sqrt(kappa^2 - 1/tau^2) / 2 pi) is that of
+ *    sqrt(2 <a^2>), frequency kappa / 2 pi) is that of
  *    the map nearest in frequency within excitation_tolerance (a map holds
  *    for its excitation only; a scene whose ambient frequency moves carries
  *    maps at several, up to BS_OBSERVER_MAPS).
@@ -79,6 +82,7 @@
  * them, as it would between two measurements.
  */
 #include "bs_observer.h"
+#include "bs_lockin.h"
 #include "bs_port.h"
 #include "bs_shape.h"
 #include "bs_sim_internal.h"
@@ -211,16 +215,19 @@ static bs_real twin_power(const bs_sim *sim)
 #endif
 }
 
-bs_status bs_observer_init(bs_observer *obs, const bs_sim *sim, const bs_observer_gains *gains,
-                           const bs_observer_options *options)
+bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer_size, size_t gains_size,
+                            bs_observer *obs, const bs_sim *sim, const bs_observer_gains *gains,
+                            const bs_observer_options *options)
 {
     const bs_observer_options defaults = bs_observer_defaults();
     const bs_status status = bs_sim_status(sim);
-    bs_lowpass2 zero;
     int i;
 
     if (!obs)
         return BS_E_NULL;
+    if (tag != BS_BUILD_TAG || observer_tag != BS_OBSERVER_TAG || observer_size != sizeof(bs_observer)
+        || gains_size != sizeof(bs_observer_gains))
+        return BS_E_BUILD; /* an observer of another layout: not even its ready field is ours to write */
     obs->ready = 0;
     if (status != BS_OK)
         return status;
@@ -252,12 +259,15 @@ bs_status bs_observer_init(bs_observer *obs, const bs_sim *sim, const bs_observe
         obs->past_deflection[i] = bs_sim_sensor(sim);
         obs->past_accel[i] = BS_R(0.0);
     }
-    obs->quadrature = BS_R(0.0);
-    zero.stage[0] = zero.stage[1] = BS_R(0.0);
-    obs->ref_aa = obs->ref_bb = obs->ref_b = zero;
-    obs->meas_a = obs->meas_b = obs->twin_a = obs->twin_b = zero;
-    obs->defl_a = obs->defl_b = zero;
-    obs->power = obs->s_error_mean = obs->s_error_sq = zero;
+    bs_lockin_reference_init(&obs->reference, sim->scene->dt, obs->options.lockin_time);
+    /* stage by stage: a struct assignment may become a call of memcpy */
+    {
+        bs_lowpass2 *const filters[] = { &obs->meas_a, &obs->meas_b,
+                                          &obs->twin_a, &obs->twin_b, &obs->defl_a, &obs->defl_b, &obs->power,
+                                          &obs->s_error_mean, &obs->s_error_sq };
+        for (i = 0; i < (int)(sizeof filters / sizeof filters[0]); ++i)
+            filters[i]->stage[0] = filters[i]->stage[1] = BS_R(0.0);
+    }
     obs->innovation_sq = BS_R(0.0);
     obs->last_outlier = 0;
     obs->gain_interval = 0;
@@ -350,7 +360,7 @@ static void correction_of(bs_observer *obs, const bs_sim *sim, bs_real e, correc
         bs_shape_expand(scene, x, &obs->shape);
         t = bs_shape_offset(scene, &obs->shape, x);
     }
-    bs_shape_expanded(scene, &obs->shape, t, x >= BS_R(0.0) && x <= scene->length, sim->k.slope_scale, phi, slope);
+    bs_shape_expanded(n, &obs->shape, t, x >= BS_R(0.0) && x <= scene->length, sim->k.slope_scale, phi, slope);
     for (k = 0; k < n; ++k) {
         const bs_real dq = gain_q[k] * e, du = gain_u[k] * e;
         c->q[k] = sim->q_beam[k] + dq;
@@ -423,51 +433,31 @@ static int beyond_gate(bs_observer *obs, bs_real e)
     return beyond;
 }
 
-static void lowpass2(bs_lowpass2 *f, bs_real x, bs_real alpha)
-{
-    f->stage[0] += alpha * (x - f->stage[0]);
-    f->stage[1] += alpha * (f->stage[0] - f->stage[1]);
-}
-
-static bs_real mean(const bs_lowpass2 *f)
-{
-    return f->stage[1];
-}
-
 /* 4: one step of the lock-in with the aligned samples. Without a
  * measurement (measured 0) the products with y hold; the reference, an
  * integral over time, and the twin's own products go on. */
-static void demodulate(bs_observer *obs, bs_real dt, bs_real a, bs_real y, bs_real y_twin, bs_real w_twin,
-                       bs_real power, int measured)
+static void demodulate(bs_observer *obs, bs_real a, bs_real y, bs_real y_twin, bs_real w_twin, bs_real power,
+                       int measured)
 {
-    const bs_real tau = obs->options.lockin_time;
-    const bs_real alpha = dt / tau;
-    bs_real b;
+    const bs_real alpha = obs->reference.alpha;
+    const bs_real b = bs_lockin_reference_step(&obs->reference, a);
 
-    obs->quadrature = (BS_R(1.0) - alpha) * obs->quadrature + dt * a;
-    lowpass2(&obs->ref_b, obs->quadrature, alpha);
-    b = obs->quadrature - mean(&obs->ref_b);
-    lowpass2(&obs->ref_aa, a * a, alpha);
-    lowpass2(&obs->ref_bb, b * b, alpha);
     if (measured) {
-        lowpass2(&obs->meas_a, y * a, alpha);
-        lowpass2(&obs->meas_b, y * b, alpha);
+        bs_lowpass2_step(&obs->meas_a, y * a, alpha);
+        bs_lowpass2_step(&obs->meas_b, y * b, alpha);
     }
-    lowpass2(&obs->twin_a, y_twin * a, alpha);
-    lowpass2(&obs->twin_b, y_twin * b, alpha);
-    lowpass2(&obs->defl_a, w_twin * a, alpha);
-    lowpass2(&obs->defl_b, w_twin * b, alpha);
-    lowpass2(&obs->power, power, alpha);
+    bs_lowpass2_step(&obs->twin_a, y_twin * a, alpha);
+    bs_lowpass2_step(&obs->twin_b, y_twin * b, alpha);
+    bs_lowpass2_step(&obs->defl_a, w_twin * a, alpha);
+    bs_lowpass2_step(&obs->defl_b, w_twin * b, alpha);
+    bs_lowpass2_step(&obs->power, power, alpha);
 }
 
-/* H = (<y a> - j kappa <y b~>) / <a^2>; kappa = sqrt(<a^2> / <b~^2>). */
-static complex_real transfer(const bs_observer *obs, const bs_lowpass2 *with_a, const bs_lowpass2 *with_b)
+/* H of the signal whose products are with_a, with_b (bs_lockin_response). */
+static complex_real transfer(const bs_lockin_basis *basis, const bs_lowpass2 *with_a, const bs_lowpass2 *with_b)
 {
-    const bs_real aa = mean(&obs->ref_aa);
-    const bs_real kappa = bs_sqrt(aa / mean(&obs->ref_bb));
     complex_real h;
-    h.re = mean(with_a) / aa;
-    h.im = -kappa * mean(with_b) / aa;
+    bs_lockin_response(basis, with_a, with_b, &h.re, &h.im);
     return h;
 }
 
@@ -544,26 +534,25 @@ static int matching_map(const bs_observer *obs, bs_real frequency, bs_real ampli
 static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
 {
     const bs_observer_gains *g = obs->gains;
-    const bs_real aa = mean(&obs->ref_aa);
     const bs_real tau = obs->options.lockin_time;
     bs_observer_estimate *est = &obs->estimate;
+    bs_lockin_basis basis;
     complex_real h_m, h_t, h_w, ratio;
-    bs_real hm_abs, kappa_sq, omega_sq, s_near, s_cross = BS_R(0.0), slope = BS_R(0.0), s_error, sigma_h;
+    bs_real aa, hm_abs, s_near, s_cross = BS_R(0.0), slope = BS_R(0.0), s_error, sigma_h;
     bs_real var_spread;
     int mirror, map;
 
     est->s = bs_sim_position(sim);
-    est->power = mean(&obs->power);
+    est->power = bs_lowpass2_mean(&obs->power);
     est->s_sigma = SIGMA_UNKNOWN;
     est->s_error = BS_R(0.0);
-    if (!(aa > BS_R(0.0) && mean(&obs->ref_bb) > BS_R(0.0)))
+    if (!bs_lockin_basis_of(&obs->reference, &basis))
         return; /* no excitation yet: nothing to demodulate against */
-    h_m = transfer(obs, &obs->meas_a, &obs->meas_b);
-    h_t = transfer(obs, &obs->twin_a, &obs->twin_b);
-    h_w = transfer(obs, &obs->defl_a, &obs->defl_b);
-    kappa_sq = aa / mean(&obs->ref_bb);
-    omega_sq = kappa_sq - BS_R(1.0) / (tau * tau);
-    est->frequency = omega_sq > BS_R(0.0) ? bs_sqrt(omega_sq) / TWO_PI : BS_R(0.0);
+    aa = basis.aa;
+    h_m = transfer(&basis, &obs->meas_a, &obs->meas_b);
+    h_t = transfer(&basis, &obs->twin_a, &obs->twin_b);
+    h_w = transfer(&basis, &obs->defl_a, &obs->defl_b);
+    est->frequency = basis.kappa / TWO_PI;
     est->amplitude = bs_sqrt((h_w.re * h_w.re + h_w.im * h_w.im) * BS_R(2.0) * aa);
     hm_abs = bs_sqrt(h_m.re * h_m.re + h_m.im * h_m.im);
     if (h_t.re * h_t.re + h_t.im * h_t.im > BS_R(0.0)) {
@@ -582,10 +571,11 @@ static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
     s_error = mirror ? s_near - s_cross : s_cross - s_near;
     {
         const bs_real alpha = dt * (bs_real)POSITION_EVERY / (BS_R(4.0) * tau);
-        lowpass2(&obs->s_error_mean, s_error, alpha);
-        lowpass2(&obs->s_error_sq, s_error * s_error, alpha);
+        bs_lowpass2_step(&obs->s_error_mean, s_error, alpha);
+        bs_lowpass2_step(&obs->s_error_sq, s_error * s_error, alpha);
     }
-    var_spread = mean(&obs->s_error_sq) - mean(&obs->s_error_mean) * mean(&obs->s_error_mean);
+    var_spread = bs_lowpass2_mean(&obs->s_error_sq)
+                 - bs_lowpass2_mean(&obs->s_error_mean) * bs_lowpass2_mean(&obs->s_error_mean);
     if (var_spread < BS_R(0.0))
         var_spread = BS_R(0.0);
     sigma_h = g->noise * bs_sqrt(dt / (BS_R(4.0) * tau * aa)) / bs_fabs(slope);
@@ -692,7 +682,7 @@ static bs_status observe(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_r
     obs->estimate.innovation = e;
     if (!measured)
         measurement = obs->past_signal[aligned]; /* as if it had been predicted exactly */
-    demodulate(obs, dt, obs->past_accel[aligned], measurement, obs->past_signal[aligned],
+    demodulate(obs, obs->past_accel[aligned], measurement, obs->past_signal[aligned],
                obs->past_deflection[aligned], twin_power(sim), measured);
     if (obs->steps % POSITION_EVERY == 0) {
         estimate_position(obs, sim, dt);

@@ -100,6 +100,11 @@ void bs_prepare(bs_sim *sim)
          * cubic term counts against the limit there */
         if (BS_WITH_IMPLICIT && scene->implicit)
             omega_sq_max = BS_R(0.0);
+        k->stretch_parity = 1;
+        for (i = 0; i < n; ++i)
+            for (j = 0; j < n; ++j)
+                if ((i + j) % 2 && scene->stretch[i][j] != BS_R(0.0))
+                    k->stretch_parity = 0;
         k->stretch_limit = BS_R(-1.0);
         if (rho > BS_R(0.0) && semidefinite((const bs_real(*)[BS_MAX_MODES])k->stretch, n))
             k->stretch_limit = (BS_R(4.0) / scene->dt - scene->dt * (omega_sq_max + extra)) / (BS_R(3.0) * rho);

@@ -132,7 +132,8 @@ static int check_cross(const bs_scene *s, const char **field)
         const double want = 0.5 * (double)s->frequency * (double)s->dt * 18446744073709551616.0;
         const double slack = 1.0 + 8.0 * (double)BS_REAL_EPS * want;
         if (!((double)s->phase_step_half - want <= slack && want - (double)s->phase_step_half <= slack))
-            return fail(field, "frequency/phase_step_half");
+            return fail(field, "frequency/phase_step_half (derived together with dt: for another frequency "
+                               "call bs_sim_set_excitation on the sim, for another dt build the scene again)");
     }
     if (s->implicit != 0 && s->implicit != 1)
         return fail(field, "implicit");

@@ -52,18 +52,18 @@ BS_INLINE void bs_shape_taylor(const bs_real *c, bs_real t, bs_real *value, bs_r
 
 /* phi[k] and slope[k] as bs_shape_eval gives them, from the expansion at
  * offset t (bs_shape_offset); 0 when on_beam is 0 (inside a clamp).
- * slope_scale = 2 shape_scale. Inlined into the contact detection (its
- * loops unrolled for a compiled scene). */
-BS_INLINE void bs_shape_expanded(const bs_scene *scene, const bs_shape_cache *cache, bs_real t, int on_beam,
-                                 bs_real slope_scale, bs_real *phi, bs_real *slope)
+ * slope_scale = 2 shape_scale; n modes. Inlined into the contact detection
+ * (its loops unrolled where n is a constant). */
+BS_INLINE void bs_shape_expanded(int n, const bs_shape_cache *cache, bs_real t, int on_beam, bs_real slope_scale,
+                                 bs_real *phi, bs_real *slope)
 {
     int k;
     if (!on_beam) { /* inside a clamp, which moves with the base */
-        for (k = 0; k < BS_NMODES(scene); ++k)
+        for (k = 0; k < n; ++k)
             phi[k] = slope[k] = BS_R(0.0);
         return;
     }
-    for (k = 0; k < BS_NMODES(scene); ++k) {
+    for (k = 0; k < n; ++k) {
         bs_real value, derivative;
         bs_shape_taylor(cache->coef[k], t, &value, &derivative);
         phi[k] = value;

@@ -149,6 +149,37 @@ bs_status bs_sim_set_excitation(bs_sim *sim, bs_real frequency, bs_real amplitud
     return BS_OK;
 }
 
+int bs_contact_laws_acceptable(bs_real mu, bs_real e_n)
+{
+    if (!(mu >= BS_R(0.0)) || mu - mu != BS_R(0.0) || !(e_n >= BS_R(0.0) && e_n <= BS_R(1.0)))
+        return 0;
+    return (BS_WITH_FRICTION || mu == BS_R(0.0)) && (BS_WITH_RESTITUTION || e_n == BS_R(0.0));
+}
+
+bs_status bs_sim_set_contact_laws(bs_sim *sim, bs_real mu, bs_real e_n)
+{
+    const bs_status status = bs_sim_status(sim);
+    if (status != BS_OK)
+        return status;
+    if (!bs_contact_laws_acceptable(mu, e_n))
+        return BS_E_ARGUMENT;
+    sim->k.mu = mu;
+    sim->k.e_n = e_n;
+    return BS_OK;
+}
+
+bs_status bs_sim_get_contact_laws(const bs_sim *sim, bs_real *mu, bs_real *e_n)
+{
+    const bs_status status = bs_sim_status(sim);
+    if (status != BS_OK)
+        return status;
+    if (mu)
+        *mu = sim->k.mu;
+    if (e_n)
+        *e_n = sim->k.e_n;
+    return BS_OK;
+}
+
 int bs_excitation_acceptable(const bs_sim *sim, bs_real frequency, bs_real amplitude, uint64_t phase_step_half,
                              bs_real step_accel)
 {
@@ -334,6 +365,13 @@ bs_real bs_sim_phase(const bs_sim *sim)
 uint64_t bs_sim_steps(const bs_sim *sim)
 {
     return bs_sim_is_ready(sim) ? sim->step : 0;
+}
+
+bs_real bs_sim_time(const bs_sim *sim)
+{
+    if (!bs_sim_is_ready(sim))
+        return bs_real_nan();
+    return (bs_real)sim->step * sim->scene->dt; /* steps times dt, never accumulated */
 }
 
 static uint32_t hash_bytes(uint32_t hash, const void *data, unsigned long size)

@@ -63,6 +63,10 @@ static inline int bs_within_stops(const bs_scene *scene, bs_real x)
 int bs_state_acceptable(const bs_sim *sim, const bs_real *q_beam, const bs_real *u_beam, const bs_real *slider,
                         const bs_real *slider_velocity);
 
+/* bs_sim_set_contact_laws's: mu finite and >= 0, e_N in [0, 1], within what
+ * the build has (friction, restitution). */
+int bs_contact_laws_acceptable(bs_real mu, bs_real e_n);
+
 /* bs_sim_set_excitation's: a frequency and amplitude it accepts, with the
  * phase step and step amplitude it derives from them (or, for the scene's
  * own frequency, the scene's phase step, which bs_sim_init takes as it is). */

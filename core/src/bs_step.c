@@ -51,6 +51,7 @@
 #include "bs_beam.h"
 #include "bs_contact.h"
 #include "bs_excitation.h"
+#include "bs_inline.h"
 #include "bs_pgs.h"
 #include "bs_piezo.h"
 #include "bs_sim_internal.h"
@@ -81,10 +82,9 @@ static void add_compensated(bs_real *sum, bs_real *low, bs_real increment)
 
 /* 1 and 2: midpoint configuration, smooth forces there and the free
  * velocities; BS_E_UNSTABLE if the explicit stiffness exceeds its limit. */
-static bs_status smooth_part(const bs_sim *sim, step_state *s)
+BS_INLINE bs_status smooth_part(const bs_sim *sim, step_state *s, const int n)
 {
     const bs_step_constants *k = &sim->k;
-    const int n = BS_NMODES(sim->scene);
     const bs_real half = k->half_dt;
     const bs_real a = s->base_accel;
     bs_real sq[BS_MAX_MODES];  /* S' q_M (bs_beam.h) */
@@ -185,10 +185,9 @@ static void solve_contacts(bs_sim *sim, step_state *s, bs_step_report *report)
 
 /* 4: the end-of-step configuration; BS_E_NONFINITE or BS_E_ESCAPED if it
  * must not be committed. */
-static bs_status end_of_step(const bs_sim *sim, step_state *s)
+BS_INLINE bs_status end_of_step(const bs_sim *sim, step_state *s, const int n)
 {
     const bs_step_constants *k = &sim->k;
-    const int n = BS_NMODES(sim->scene);
     const bs_real half = k->half_dt;
     bs_real check = BS_R(0.0);
     int i;
@@ -228,9 +227,8 @@ static bs_status end_of_step(const bs_sim *sim, step_state *s)
 /* The step's result becomes the sim's state. The warm starts: the slots of
  * the contacts of the last step that are not active now are cleared, the
  * active ones written; the others are 0 already. */
-static void commit(bs_sim *sim, const step_state *s, const bs_step_report *report)
+BS_INLINE void commit(bs_sim *sim, const step_state *s, const bs_step_report *report, const int n)
 {
-    const int n = BS_NMODES(sim->scene);
     const bs_contact_set *set = &sim->contacts;
     unsigned active = 0, gone;
     int a, i, r;
@@ -273,15 +271,15 @@ static void commit(bs_sim *sim, const step_state *s, const bs_step_report *repor
     sim->phase += 2 * sim->phase_step_half;
 }
 
-/* The step with mean base acceleration base_accel. */
-static bs_status step(bs_sim *sim, bs_real base_accel)
+/* The step with mean base acceleration base_accel, for n modes. */
+BS_INLINE bs_status step_modes(bs_sim *sim, bs_real base_accel, const int n)
 {
     step_state s;
     bs_step_report report;
     bs_status status;
 
     s.base_accel = base_accel;
-    status = smooth_part(sim, &s);
+    status = smooth_part(sim, &s, n);
     if (status != BS_OK)
         return status;
     status = find_contacts(sim, &s);
@@ -295,11 +293,18 @@ static bs_status step(bs_sim *sim, bs_real base_accel)
     report.converged = 1;
     if (sim->contacts.count > 0)
         solve_contacts(sim, &s, &report);
-    status = end_of_step(sim, &s);
+    status = end_of_step(sim, &s, n);
     if (status != BS_OK)
         return status;
-    commit(sim, &s, &report);
+    commit(sim, &s, &report, n);
     return BS_OK;
+}
+
+/* The step, its mode count a constant for the common counts (bs_inline.h). */
+static bs_status step(bs_sim *sim, bs_real base_accel)
+{
+    BS_MODES_SWITCH(BS_NMODES(sim->scene), return step_modes(sim, base_accel, MODES));
+    return BS_OK; /* not reached */
 }
 
 bs_status bs_sim_step(bs_sim *sim)

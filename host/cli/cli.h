@@ -1,4 +1,20 @@
-/* cli.h - the beamslider command line: one function per subcommand. */
+/* cli.h - the beamslider command line: a thin client of the host library
+ * (host/lib/): it parses options, opens the files a command writes, prints
+ * what went wrong and chooses the exit status. The commands are one table,
+ * main.c's commands[]: (name, handler, usage).
+ *
+ * Adding a command (the checklist, as git's builtin.h has one):
+ *   1. host/cli/cli_NAME.c: int cli_NAME(int argc, char **argv), given the
+ *      arguments after the command's name; and its usage texts
+ *      cli_NAME_synopsis (every option, as "beamslider NAME SCENE.ini
+ *      [--opt X] ...") and cli_NAME_help (what it does, indented by two);
+ *   2. declare the three below;
+ *   3. a row of commands[] in main.c (its place there is its place in
+ *      `beamslider --help`); `beamslider NAME --help` then prints its usage;
+ *   4. the work itself in a wing of host/lib (never here), its messages
+ *      returned as text; report them with cli_error, exit with CLI_*;
+ *   5. a check in tests/check_cli.sh and a line in README.md's command list.
+ */
 #ifndef CLI_H
 #define CLI_H
 
@@ -9,20 +25,30 @@
  * written), 2 bad usage or bad input. */
 enum { CLI_OK = 0, CLI_FAILED = 1, CLI_USAGE = 2 };
 
-int cli_modes(int argc, char **argv);
-int cli_gen(int argc, char **argv);
-int cli_sweep(int argc, char **argv);
-int cli_run(int argc, char **argv);
-int cli_fields(int argc, char **argv);
-int cli_twin(int argc, char **argv);
-int cli_twin_plant_command(int argc, char **argv);
-int cli_twin_gains_command(int argc, char **argv);
-int cli_map(int argc, char **argv);
-int cli_map_merge(int argc, char **argv);
-int cli_map_plot(int argc, char **argv);
+/* The commands: handler, synopsis, help (see the checklist above). */
+#define CLI_COMMAND(name)                   \
+    int cli_##name(int argc, char **argv); \
+    extern const char cli_##name##_synopsis[]; \
+    extern const char cli_##name##_help[];
+CLI_COMMAND(modes)
+CLI_COMMAND(gen)
+CLI_COMMAND(sweep)
+CLI_COMMAND(run)
+CLI_COMMAND(fields)
+CLI_COMMAND(twin)
+CLI_COMMAND(twin_plant)
+CLI_COMMAND(twin_gains)
+CLI_COMMAND(map)
+CLI_COMMAND(map_merge)
+CLI_COMMAND(map_plot)
+#undef CLI_COMMAND
 
-/* Prints "beamslider: error: ..." to stderr. */
+/* Prints "beamslider: error: ..." to stderr (cli_error.c). */
+#if defined(__GNUC__)
+void cli_error(const char *format, ...) __attribute__((format(printf, 1, 2)));
+#else
 void cli_error(const char *format, ...);
+#endif
 
 /* An integer option value in [low, high] (low, high within int) into
  * *value. Returns 0, or -1 after reporting "OPTION TEXT: allowed: ...". */

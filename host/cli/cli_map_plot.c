@@ -1,11 +1,12 @@
 /* cli_map_plot.c - `beamslider map-plot DIR`: heatmaps of a map's merged
  * table (DIR/map.csv) over two of its varied fields, drawn by gnuplot
- * (Debian's gnuplot-nox; docs/maps.md section 5).
+ * (Debian's gnuplot-nox; docs/maps.md section 5). The options, and running
+ * gnuplot: what is drawn is the map wing's (host/lib/map/map_plot.h).
  *
  * Writes PREFIX.dat (the grid, one line per point, NaN where a class or a
  * number is missing) and PREFIX.gp (the gnuplot script, kept so that a
  * figure can be restyled by hand), then runs gnuplot on it: PREFIX_outcome,
- * _agreement, _s_final, _s_spread, _amp_h and, when the scene has a
+ * _agreement, _s_settled, _s_spread, _amp_h and, when the scene has a
  * transducer, _power (.png). Cells are grid indices, so that a list of
  * values as uneven as 1,2,5,10 still gives equal cells; the tics name the
  * values. Fields varied beyond the two plotted are fixed with --at.
@@ -27,28 +28,24 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include "cli.h"
-#include "input_file.h"
 #include "map_grid.h"
+#include "map_plot.h"
 #include "map_store.h"
-#include "map_table.h"
 #include "out_gnuplot.h"
-#include "outcome.h"
 
-static const char plot_usage[] =
-    "usage: beamslider map-plot DIR [--x FIELD] [--y FIELD] [--at FIELD=VALUE ...]\n"
-    "                           [--mark X,Y,LABEL ...] [--title TEXT] [--out PREFIX]\n"
-    "  heatmaps of DIR/map.csv (beamslider map, then map-merge for shards) over two varied\n"
-    "  fields (default: the first two --vary of the map): outcome class (the class most\n"
-    "  starts ended in), agreement (the fraction that did), final position s_final (mean\n"
+const char cli_map_plot_synopsis[] =
+    "beamslider map-plot DIR [--x FIELD] [--y FIELD] [--at FIELD=VALUE ...] [--mark X,Y,LABEL ...]\n"
+    "        [--title TEXT] [--out PREFIX]";
+const char cli_map_plot_help[] =
+    "  heatmaps of a map with gnuplot (docs/maps.md section 5)\n"
+    "  Of DIR/map.csv (beamslider map, then map-merge for shards) over two varied fields (default: the first two --vary of the map): outcome class (the class\n"
+    "  most starts ended in), agreement (the fraction that did), final position s_final (mean\n"
     "  and spread over the starts), settled amplitude amp_h and, with a transducer, power.\n"
     "  --at fixes every other varied field; --mark draws a labelled point at field values\n"
     "  X,Y; --title starts each title (default: the scene's name). PNGs PREFIX_outcome.png,\n"
     "  ... (default PREFIX: DIR/plot); needs gnuplot (Debian: gnuplot-nox).\n";
 
-#define MAX_MARKS 16
-
-/* One value per cell and figure. */
-enum { FIG_OUTCOME, FIG_AGREEMENT, FIG_S, FIG_SPREAD, FIG_AMP, FIG_POWER, FIGURES };
+#define MAX_MARKS MAP_PLOT_MARKS
 
 typedef struct plot_cli {
     const char *dir, *x, *y, *prefix, *title;
@@ -100,156 +97,6 @@ static int vary_named(const map_grid *grid, const char *name)
         if (!strcmp(grid->vary[v].name, name))
             return v;
     return -1;
-}
-
-/* The grid position of value text of field v: an index, fractional between
- * two numeric values; -1 if outside. */
-static double position_of(const map_vary *vary, const char *text)
-{
-    char *end;
-    const double x = strtod(text, &end);
-    int k;
-    for (k = 0; k < vary->count; ++k)
-        if (!strcmp(vary->values[k], text))
-            return k;
-    if (*end || end == text)
-        return -1.0;
-    for (k = 0; k + 1 < vary->count; ++k) {
-        const double a = strtod(vary->values[k], NULL), b = strtod(vary->values[k + 1], NULL);
-        if ((x - a) * (x - b) <= 0.0 && a != b)
-            return k + (x - a) / (b - a);
-    }
-    return -1.0;
-}
-
-/* A field name with its unit, for an axis. */
-static void axis_label(const map_vary *vary, char *out, size_t size)
-{
-    const char *unit = vary->field >= 0 ? scene_fields[vary->field].unit : "";
-    snprintf(out, size, *unit ? "%s [%s]" : "%s%s", vary->name, unit);
-}
-
-/* gnuplot tics naming at most 13 of the values. */
-static void write_tics(FILE *gp, const char *axis, const map_vary *vary)
-{
-    const int every = (vary->count + 12) / 13;
-    int k;
-    fprintf(gp, "set %stics (", axis);
-    for (k = 0; k < vary->count; k += every) {
-        fputs(k ? ", " : "", gp);
-        out_gnuplot_string(gp, vary->values[k]);
-        fprintf(gp, " %d", k);
-    }
-    fprintf(gp, ")\n");
-}
-
-/* Reads map.csv into cells[(iy * nx + ix) * FIGURES + figure] for the rows
- * at the --at values. The table must be whole: its header, one row per
- * grid point in order, each as map-merge writes it, and nothing after.
- * 0, or -1 after reporting the file and line. */
-static int read_table(const char *dir, const map_grid *grid, int vx, int vy, const int *at_index, double *cells)
-{
-    char path[4200], line[4096], header[MAP_POINTS_HEADER], why[256];
-    long number = 0, point = 0;
-    FILE *in;
-    int failed = 0;
-
-    snprintf(path, sizeof path, "%s/%s", dir, MAP_POINTS_TABLE);
-    {
-        char err[4600];
-        const char *verb;
-        if (input_file_open_why(path, INPUT_MAP_TABLE, &in, NULL, &verb, err, sizeof err) != 0) {
-            if (!strcmp(verb, "open"))
-                cli_error("%s: %s (all cases done? beamslider map-merge %s writes it)", path, err, dir);
-            else
-                cli_error("%s: cannot read %s: %s", path, input_kind_name(INPUT_MAP_TABLE), err);
-            return -1;
-        }
-    }
-    map_table_points_header(grid, header, sizeof header);
-    while (!failed && fgets(line, sizeof line, in)) {
-        const size_t length = strlen(line);
-        map_point_figures figures;
-        long cell;
-        int v, skip = 0;
-        ++number;
-        if (length == 0 || line[length - 1] != '\n') {
-            snprintf(why, sizeof why, length + 1 == sizeof line ? "line too long" : "the last line is cut short");
-            failed = 1;
-            break;
-        }
-        line[length - 1] = '\0';
-        if (number == 1) {
-            if (strcmp(line, header)) {
-                snprintf(why, sizeof why, "not the header of this map's table (%.60s...)", header);
-                failed = 1;
-            }
-            continue;
-        }
-        if (point >= grid->points) {
-            snprintf(why, sizeof why, "more rows than the map's %ld grid points", grid->points);
-            failed = 1;
-            break;
-        }
-        if (map_table_point_parse(grid, point, line, &figures, why, sizeof why) != 0) {
-            failed = 1;
-            break;
-        }
-        ++point;
-        for (v = 0; v < grid->vary_count; ++v)
-            skip |= at_index[v] >= 0 && map_point_value(grid, figures.point, v) != at_index[v];
-        if (skip)
-            continue;
-        cell = (long)map_point_value(grid, figures.point, vy) * grid->vary[vx].count
-               + map_point_value(grid, figures.point, vx);
-        cells[cell * FIGURES + FIG_OUTCOME] = figures.outcome;
-        cells[cell * FIGURES + FIG_AGREEMENT] = figures.agreement;
-        cells[cell * FIGURES + FIG_S] = figures.s_final_mean;
-        cells[cell * FIGURES + FIG_SPREAD] = figures.s_final_sd;
-        cells[cell * FIGURES + FIG_AMP] = figures.amp_h_mean;
-        cells[cell * FIGURES + FIG_POWER] = figures.power_w_mean;
-    }
-    if (!failed && ferror(in)) {
-        cli_error("%s: %s", path, strerror(errno));
-        fclose(in);
-        return -1;
-    }
-    if (!failed && point < grid->points) {
-        snprintf(why, sizeof why, "%ld of the map's %ld grid points have no row (cut short?)", grid->points - point,
-                 grid->points);
-        failed = 1;
-        number = 0;
-    }
-    fclose(in);
-    if (failed) {
-        if (number > 0)
-            cli_error("%s:%ld: %s; not a table as map-merge writes it (run beamslider map-merge %s again)", path,
-                      number, why, dir);
-        else
-            cli_error("%s: %s; not a table as map-merge writes it (run beamslider map-merge %s again)", path, why,
-                      dir);
-        return -1;
-    }
-    return 0;
-}
-
-static void write_figure(FILE *gp, const char *prefix, const char *name, const char *title, int column,
-                         const char *scene, int repeat, int marks)
-{
-    char text[4400];
-    fprintf(gp, "set output ");
-    snprintf(text, sizeof text, "%s_%s.png", prefix, name);
-    out_gnuplot_path(gp, text);
-    fprintf(gp, "\nset title "); /* two lines: the map, the figure */
-    out_gnuplot_string(gp, scene);
-    fprintf(gp, " . \"\\n\" . ");
-    snprintf(text, sizeof text, "%s (%d start%s per point)", title, repeat, repeat > 1 ? "s" : "");
-    out_gnuplot_string(gp, text);
-    fprintf(gp, "\nplot grid using 1:2:%d with image notitle", column);
-    if (marks)
-        fprintf(gp, ", \\\n     marks using 1:2 with points pt 7 ps 1.3 lc rgb 'white' notitle, \\\n"
-                    "     marks using 1:2 with points pt 6 ps 1.3 lc rgb 'black' notitle");
-    fputc('\n', gp);
 }
 
 /* The gnuplot on PATH, into found; 0, or -1 if there is none. */
@@ -323,139 +170,15 @@ static int run_gnuplot(const char *program, const char *script)
     return 0;
 }
 
-/* Writes the script to path: every text through the gnuplot writer. 0, or -1. */
-static int write_script(const char *path, const plot_cli *cli, const map_grid *grid, int vx, int vy,
-                        const char *prefix, const char *scene, const int *has, const double *mark_x,
-                        const double *mark_y, char mark_label[][160])
-{
-    static const char *const class_colour[OUTCOME_CLASSES] = { "#2ca02c", "#1f77b4", "#ff7f0e", "#b0b0b0",
-                                                               "#8c564b", "#d62728", "#e377c2" };
-    char text[4400], label[160];
-    FILE *out = fopen(path, "w");
-    int k, failed;
-
-    if (!out)
-        return -1;
-    snprintf(text, sizeof text, "written by beamslider map-plot %s (docs/maps.md); run: gnuplot %s", cli->dir, path);
-    out_gnuplot_comment(out, text);
-    fprintf(out, "set terminal pngcairo size 1000,700 font 'sans,11' noenhanced\n");
-    fprintf(out, "grid = ");
-    snprintf(text, sizeof text, "%s.dat", prefix);
-    out_gnuplot_path(out, text);
-    fprintf(out, "\nmarks = ");
-    snprintf(text, sizeof text, "%s_marks.dat", prefix);
-    out_gnuplot_path(out, text);
-    fprintf(out, "\nset datafile missing 'NaN'\nset xrange [-0.5:%d.5]\nset yrange [-0.5:%d.5]\n",
-            grid->vary[vx].count - 1, grid->vary[vy].count - 1);
-    write_tics(out, "x", &grid->vary[vx]);
-    write_tics(out, "y", &grid->vary[vy]);
-    axis_label(&grid->vary[vx], label, sizeof label);
-    fprintf(out, "set xlabel ");
-    out_gnuplot_string(out, label);
-    axis_label(&grid->vary[vy], label, sizeof label);
-    fprintf(out, "\nset ylabel ");
-    out_gnuplot_string(out, label);
-    fprintf(out, "\nset tics out nomirror\nset rmargin 24\n");
-    for (k = 0; k < cli->mark_count; ++k) {
-        fprintf(out, "set label %d ", k + 1);
-        out_gnuplot_string(out, mark_label[k]);
-        fprintf(out, " at %.6g,%.6g left offset 0.9,0.5 tc rgb 'black' font ',10' front\n", mark_x[k], mark_y[k]);
-    }
-    fprintf(out, "set palette maxcolors %d\nset palette defined (", OUTCOME_CLASSES);
-    for (k = 0; k < OUTCOME_CLASSES; ++k)
-        fprintf(out, "%s%d '%s'", k ? ", " : "", k, class_colour[k]);
-    fprintf(out, ")\nset cbrange [-0.5:%d.5]\nset cbtics (", OUTCOME_CLASSES - 1);
-    for (k = 0; k < OUTCOME_CLASSES; ++k) {
-        fprintf(out, "%s", k ? ", " : "");
-        out_gnuplot_string(out, outcome_label((outcome_class)k));
-        fprintf(out, " %d", k);
-    }
-    fprintf(out, ")\n");
-    write_figure(out, prefix, "outcome", "outcome class: the class most starts ended in", 3, scene, grid->repeat, cli->mark_count > 0);
-    fprintf(out, "set palette maxcolors 0\nset palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21908d', "
-                 "0.75 '#5dc863', 1 '#fde725')\nset cbtics auto\n");
-    fprintf(out, "set cbrange [0:1]\nset cblabel 'fraction of the starts'\n");
-    write_figure(out, prefix, "agreement", "agreement: the fraction of the starts in that class", 4, scene,
-                 grid->repeat, cli->mark_count > 0);
-    fprintf(out, "set cbrange [*:*]\nset cblabel 's = x_C / L'\n");
-    write_figure(out, prefix, "s_final", "final position s_final: last 10 s, mean of the starts", 5, scene,
-                 grid->repeat, cli->mark_count > 0);
-    fprintf(out, "set cblabel 'standard deviation of s_final'\n");
-    if (has[FIG_SPREAD])
-        write_figure(out, prefix, "s_spread", "spread of s_final: standard deviation over the starts", 6, scene,
-                     grid->repeat, cli->mark_count > 0);
-    fprintf(out, "set cblabel 'w(4L/7) / h'\n");
-    write_figure(out, prefix, "amp_h", "settled amplitude amp_h: last 10 s, mean of the starts", 7, scene,
-                 grid->repeat, cli->mark_count > 0);
-    if (has[FIG_POWER]) {
-        fprintf(out, "set cblabel 'W'\n");
-        write_figure(out, prefix, "power", "harvested power: last 10 s, mean of the starts", 8, scene,
-                     grid->repeat, cli->mark_count > 0);
-    }
-    failed = ferror(out) != 0;
-    failed |= fclose(out) != 0;
-    return failed ? -1 : 0;
-}
-
-/* Writes the grid's cells (one line per cell, a blank line per row of y:
- * gnuplot's image format) to path, and sets has[figure] when a figure has
- * a value. 0, or -1. */
-static int write_grid(const char *path, const map_grid *grid, int vx, int vy, const double *cells, int *has)
-{
-    FILE *out = fopen(path, "w");
-    int ix, iy, k, failed;
-    if (!out)
-        return -1;
-    fprintf(out, "# ix iy outcome agreement s_final_mean s_final_sd amp_h_mean power_w_mean\n");
-    for (iy = 0; iy < grid->vary[vy].count; ++iy) {
-        for (ix = 0; ix < grid->vary[vx].count; ++ix) {
-            const double *cell = cells + ((size_t)iy * (size_t)grid->vary[vx].count + (size_t)ix) * FIGURES;
-            fprintf(out, "%d %d", ix, iy);
-            for (k = 0; k < FIGURES; ++k) {
-                fprintf(out, isfinite(cell[k]) ? " %.9g" : " NaN", cell[k]);
-                has[k] |= isfinite(cell[k]) != 0;
-            }
-            fputc('\n', out);
-        }
-        fputc('\n', out);
-    }
-    failed = ferror(out) != 0;
-    failed |= fclose(out) != 0;
-    return failed ? -1 : 0;
-}
-
-/* The --mark points in grid positions (their labels are in the script). 0, or -1. */
-static int write_marks(const char *path, const double *mark_x, const double *mark_y, int count)
-{
-    FILE *out = fopen(path, "w");
-    int k, failed;
-    if (!out)
-        return -1;
-    fprintf(out, "# x y: the --mark points in grid positions\n");
-    for (k = 0; k < count; ++k)
-        fprintf(out, "%.6g %.6g\n", mark_x[k], mark_y[k]);
-    failed = ferror(out) != 0;
-    failed |= fclose(out) != 0;
-    return failed ? -1 : 0;
-}
-
 int cli_map_plot(int argc, char **argv)
 {
     plot_cli cli;
     map_grid grid;
-    char err[2048], scene[SCENE_TEXT], prefix[4200], path[4300], gnuplot[4200];
-    int at_index[MAP_MAX_VARY];
-    double mark_x[MAX_MARKS], mark_y[MAX_MARKS];
-    char mark_label[MAX_MARKS][160];
-    double *cells = NULL;
-    int has[FIGURES] = { 0 }; /* figures with a value to draw (a spread needs two starts) */
+    map_plot plot;
+    char err[4800], scene[SCENE_TEXT], prefix[4200], path[4300], gnuplot[4200];
     int vx, vy, v, k, status = CLI_USAGE;
     size_t n_cells, c;
 
-    if (argc >= 1 && (!strcmp(argv[0], "--help") || !strcmp(argv[0], "-h"))) {
-        fputs(plot_usage, stdout);
-        return CLI_OK;
-    }
     if (parse_options(argc, argv, &cli) != 0)
         return CLI_USAGE;
     if (strlen(cli.prefix ? cli.prefix : cli.dir) > 4000) {
@@ -476,8 +199,9 @@ int cli_map_plot(int argc, char **argv)
         cli_error("%s", err);
         return CLI_USAGE;
     }
-    if (cli.title)
-        snprintf(scene, sizeof scene, "%s", cli.title);
+    memset(&plot, 0, sizeof plot);
+    plot.grid = &grid;
+    plot.scene = cli.title ? cli.title : scene;
     vx = cli.x ? vary_named(&grid, cli.x) : 0;
     vy = cli.y ? vary_named(&grid, cli.y) : 1;
     if (grid.vary_count < 2 || vx < 0 || vy < 0 || vx == vy || vy >= grid.vary_count) {
@@ -485,8 +209,10 @@ int cli_map_plot(int argc, char **argv)
                   grid.vary_count);
         goto done;
     }
+    plot.vx = vx;
+    plot.vy = vy;
     for (v = 0; v < grid.vary_count; ++v)
-        at_index[v] = -1;
+        plot.at_index[v] = -1;
     for (k = 0; k < cli.at_count; ++k) {
         const char *equals = strchr(cli.at[k], '=');
         char name[MAP_FIELD];
@@ -496,71 +222,65 @@ int cli_map_plot(int argc, char **argv)
             cli_error("--at %s: expected FIELD=VALUE of a varied field other than --x and --y", cli.at[k]);
             goto done;
         }
-        for (at_index[v] = 0; at_index[v] < grid.vary[v].count; ++at_index[v])
-            if (!strcmp(grid.vary[v].values[at_index[v]], equals + 1))
+        for (plot.at_index[v] = 0; plot.at_index[v] < grid.vary[v].count; ++plot.at_index[v])
+            if (!strcmp(grid.vary[v].values[plot.at_index[v]], equals + 1))
                 break;
-        if (at_index[v] == grid.vary[v].count) {
+        if (plot.at_index[v] == grid.vary[v].count) {
             cli_error("--at %s: %s is not one of the map's values of %s", cli.at[k], equals + 1, name);
             goto done;
         }
     }
     for (v = 0; v < grid.vary_count; ++v)
-        if (v != vx && v != vy && at_index[v] < 0) {
+        if (v != vx && v != vy && plot.at_index[v] < 0) {
             if (grid.vary[v].count > 1) {
                 cli_error("%s is varied too: fix it with --at %s=VALUE", grid.vary[v].name, grid.vary[v].name);
                 goto done;
             }
-            at_index[v] = 0;
+            plot.at_index[v] = 0;
         }
     for (k = 0; k < cli.mark_count; ++k) { /* checked before anything is read or written */
         char x[64], y[64];
-        if (sscanf(cli.mark[k], "%63[^,],%63[^,],%159[^\n]", x, y, mark_label[k]) != 3
-            || (mark_x[k] = position_of(&grid.vary[vx], x)) < 0 || (mark_y[k] = position_of(&grid.vary[vy], y)) < 0) {
+        if (sscanf(cli.mark[k], "%63[^,],%63[^,],%159[^\n]", x, y, plot.mark_label[k]) != 3
+            || (plot.mark_x[k] = map_plot_position(&grid.vary[vx], x)) < 0
+            || (plot.mark_y[k] = map_plot_position(&grid.vary[vy], y)) < 0) {
             cli_error("--mark %s: expected X,Y,LABEL with X and Y within the map's values of %s and %s",
                       cli.mark[k], grid.vary[vx].name, grid.vary[vy].name);
             goto done;
         }
     }
+    plot.mark_count = cli.mark_count;
     /* the grid's points bound the two counts (MAP_MAX_CASES): no overflow */
     n_cells = (size_t)grid.vary[vx].count * (size_t)grid.vary[vy].count;
-    cells = malloc(n_cells * FIGURES * sizeof *cells);
-    if (!cells) {
+    plot.cells = malloc(n_cells * MAP_PLOT_FIGURES * sizeof *plot.cells);
+    if (!plot.cells) {
         cli_error("out of memory for %lu cells", (unsigned long)n_cells);
         status = CLI_FAILED;
         goto done;
     }
-    for (c = 0; c < n_cells * FIGURES; ++c)
-        cells[c] = (double)NAN;
-    if (read_table(cli.dir, &grid, vx, vy, at_index, cells) != 0)
+    for (c = 0; c < n_cells * MAP_PLOT_FIGURES; ++c)
+        plot.cells[c] = (double)NAN;
+    if (map_plot_read(cli.dir, &plot, err, sizeof err) != 0) {
+        cli_error("%s", err);
         goto done; /* CLI_USAGE: the folder is bad input */
+    }
     status = CLI_FAILED; /* from here on, what fails is the work */
     if (find_gnuplot(gnuplot, sizeof gnuplot) != 0) {
         cli_error("gnuplot is not installed (no gnuplot on PATH; Debian: apt-get install gnuplot-nox): "
                   "no picture drawn, nothing written");
         goto done;
     }
-    snprintf(path, sizeof path, "%s.dat", prefix);
-    if (write_grid(path, &grid, vx, vy, cells, has) != 0) {
-        cli_error("cannot write %s: %s", path, strerror(errno));
-        goto done;
-    }
-    snprintf(path, sizeof path, "%s_marks.dat", prefix);
-    if (write_marks(path, mark_x, mark_y, cli.mark_count) != 0) {
-        cli_error("cannot write %s: %s", path, strerror(errno));
+    if (map_plot_write(prefix, cli.dir, &plot, err, sizeof err) != 0) {
+        cli_error("%s", err);
         goto done;
     }
     snprintf(path, sizeof path, "%s.gp", prefix);
-    if (write_script(path, &cli, &grid, vx, vy, prefix, scene, has, mark_x, mark_y, mark_label) != 0) {
-        cli_error("cannot write %s: %s", path, strerror(errno));
-        goto done;
-    }
     if (run_gnuplot(gnuplot, path) != 0)
         goto done;
-    fprintf(stderr, "map-plot: wrote %s_{outcome,agreement,s_final%s,amp_h%s}.png\n", prefix,
-            has[FIG_SPREAD] ? ",s_spread" : "", has[FIG_POWER] ? ",power" : "");
+    fprintf(stderr, "map-plot: wrote %s_{outcome,agreement,s_settled%s,amp_h%s}.png\n", prefix,
+            plot.has[MAP_PLOT_SPREAD] ? ",s_spread" : "", plot.has[MAP_PLOT_POWER] ? ",power" : "");
     status = CLI_OK;
 done:
-    free(cells);
+    free(plot.cells);
     map_grid_free(&grid);
     return status;
 }

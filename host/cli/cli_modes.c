@@ -5,6 +5,11 @@
 #include "out_text.h"
 #include "scene_build.h"
 
+const char cli_modes_synopsis[] = "beamslider modes SCENE.ini";
+const char cli_modes_help[] =
+    "  modal data: f_k [Hz], lambda_k, gamma_k, phi_k(4/7) per mode, and the mode-shape fit;\n"
+    "  the first natural frequency with the slider rigidly attached at s (where it meets f_ex)\n";
+
 int cli_modes(int argc, char **argv)
 {
     static scene_file file;   /* static: large */

@@ -7,11 +7,27 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
+#include "cli_progress.h"
 #include "excitation_file.h"
 #include "run.h"
+#include "run_summary.h"
 #include "scene_build.h"
 #include "scene_limits.h"
-#include "summary.h"
+
+const char cli_run_synopsis[] =
+    "beamslider run SCENE.ini [--model free|pcs] [--s0 S] [--t-end T] [--dt DT] [--pgs-iters K]\n"
+    "        [--out FILE.csv] [--every N] [--periods FILE.csv] [--set section.key=value ...]\n"
+    "        [--excitation FILE.csv|FILE.wav [--scale A] [--channel C] [--latency S]]";
+const char cli_run_help[] =
+    "  simulate: CSV rows, one row per excitation period, a JSON summary on stdout\n"
+    "  CSV rows every N steps (--out: t, w_sensor, s, z_r, beta, contacts, pgs_iters,\n"
+    "  pgs_residual; v, p, v_s with a transducer), one row per excitation period with --periods\n"
+    "  (t, amp_h, s, ds), JSON summary on stdout (s_final: s at t_end; README.md).\n"
+    "  --model, --s0, --t-end, --dt and --pgs-iters set [run] model, s0, t_end, [numerics] dt and\n"
+    "  [solver] max_sweeps; --set any field (beamslider fields lists them). --excitation: the base\n"
+    "  follows a recorded acceleration (CSV or WAV; --scale: m/s^2 at full scale, --channel: from\n"
+    "  1, --latency: seconds the record lags) for the record's length unless --t-end is given\n"
+    "  (docs/twin.md).\n";
 
 typedef struct run_cli {
     const char *scene_path;
@@ -135,7 +151,7 @@ static int parse_options(int argc, char **argv, run_cli *cli, scene_file *file)
                 return -1;
             }
         } else {
-            cli_error("unknown option '%s' (see beamslider --help)", option);
+            cli_error("unknown option '%s' (see beamslider run --help)", option);
             return -1;
         }
     }
@@ -220,6 +236,7 @@ int cli_run(int argc, char **argv)
     char err[1024];
     cli_output outputs[2];
     cli_input record_input;
+    cli_progress bar;
     FILE *csv, *periods;
     int failed, status;
 
@@ -254,13 +271,18 @@ int cli_run(int argc, char **argv)
     options.every = cli.every;
     options.csv = csv;
     options.periods = periods;
-    options.show_progress = 1;
+    cli_progress_start(&bar, options.model == BS_MODEL_PCS ? "pcs" : "run");
+    options.progress = cli_progress_hook;
+    options.progress_context = &bar;
+    options.on_step = NULL;
+    options.on_step_context = NULL;
     /* the file's schedule was checked when it was read */
     options.excitation_schedule = schedule_parse(file.params.schedule, &excitation, err, sizeof err) == 0
                                       ? &excitation : NULL;
     options.base_accel = measured ? record_mean : NULL;
     options.base_accel_source = &record;
     failed = run_scene(&scene, &options, &result) != 0;
+    cli_progress_end(&bar);
     /* a write error ends the run: then both files are reported incomplete */
     {
         const int csv_lost = close_output(cli.out_path, csv, &result) != 0;
@@ -268,7 +290,9 @@ int cli_run(int argc, char **argv)
         if (csv_lost || periods_lost)
             result.write_failed = failed = 1;
     }
-    if (result.input_failed)
+    if (result.out_of_memory)
+        cli_error("out of memory for the simulation");
+    else if (result.input_failed)
         cli_error("%s; state and CSV kept up to t = %.6g s", record.err, result.t);
     else if (result.status != BS_OK)
         cli_error("%s: stopped at t = %.9g s (step %llu): %s; state and CSV kept up to the last good step",

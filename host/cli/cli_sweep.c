@@ -1,5 +1,5 @@
 /* cli_sweep.c - `beamslider sweep SCENE --dir up|down --out FILE.csv [options]`:
- * the quasi-static PCS sweep of docs/model.md 6 (host/lib/sweep.c), one CSV row per
+ * the quasi-static PCS sweep of docs/model.md 6 (host/lib/run/sweep.c), one CSV row per
  * grid point and a one-line JSON summary on stdout. */
 #include <errno.h>
 #include <math.h>
@@ -7,22 +7,23 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
+#include "cli_progress.h"
+#include "run_summary.h"
 #include "scene_build.h"
-#include "summary.h"
 #include "sweep.h"
 
-static const char sweep_usage[] =
-    "usage: beamslider sweep SCENE.ini --dir up|down --out FILE.csv [--from 0] [--to 0.5]\n"
-    "                        [--step 0.005] [--hold 100] [--record 25] [--dt DT] [--pgs-iters K]\n"
-    "                        [--set section.key=value ...]\n"
-    "                        [--trace FILE.csv --trace-at S [--trace-periods 5]]\n"
-    "  quasi-static PCS sweep with continuation (docs/model.md 6), from rest at the first point:\n"
-    "  per grid point s~ (up: --from to --to, down: --to to --from) --hold excitation\n"
-    "  periods, then --record periods measured. CSV per point: s, amp_h (mean half\n"
-    "  peak-to-peak of w(4L/7) / h), v_mean (x_C displacement / (L periods), positive\n"
-    "  toward the centre), contact-solve statistics. --trace: per-step rows (beta, beam\n"
-    "  slope angle alpha at s~, beta + alpha, contacts) over the first --trace-periods\n"
-    "  recorded periods at the grid point S. JSON summary on stdout.\n";
+const char cli_sweep_synopsis[] =
+    "beamslider sweep SCENE.ini --dir up|down --out FILE.csv [--from 0] [--to 0.5] [--step 0.005]\n"
+    "        [--hold 100] [--record 25] [--dt DT] [--pgs-iters K] [--set section.key=value ...]\n"
+    "        [--trace FILE.csv --trace-at S [--trace-periods 5]]";
+const char cli_sweep_help[] =
+    "  quasi-static PCS sweep: amplitude and transport per s~ (docs/model.md 6)\n"
+    "  With continuation from rest at the first point: per grid point s~ (up: --from to --to, down: --to to --from)\n"
+    "  --hold excitation periods, then --record periods measured. CSV per point: s, amp_h (mean\n"
+    "  half peak-to-peak of w(4L/7) / h), v_mean (x_C displacement / (L periods), positive\n"
+    "  toward the centre), contact-solve statistics. --trace: per-step rows (beta, beam slope\n"
+    "  angle alpha at s~, beta + alpha, contacts) over the first --trace-periods recorded periods\n"
+    "  at the grid point S. JSON summary on stdout.\n";
 
 typedef struct sweep_cli {
     const char *scene_path, *out_path, *trace_path;
@@ -115,7 +116,7 @@ static int parse_options(int argc, char **argv, sweep_cli *cli, sweep_options *o
         } else if (!strcmp(option, "--trace-periods")) {
             failed = cli_parse_int(option, value, 1, 1000000, &options->trace_periods);
         } else {
-            cli_error("unknown option '%s' (see beamslider --help)", option);
+            cli_error("unknown option '%s' (see beamslider sweep --help)", option);
             return -1;
         }
         if (failed)
@@ -188,13 +189,10 @@ int cli_sweep(int argc, char **argv)
     sweep_result r;
     char err[1024];
     cli_output outputs[2];
+    cli_progress bar;
     FILE *csv, *trace;
     int failed, points, status;
 
-    if (argc >= 1 && (!strcmp(argv[0], "--help") || !strcmp(argv[0], "-h"))) {
-        fputs(sweep_usage, stdout);
-        return CLI_OK;
-    }
     if (parse_options(argc, argv, &cli, &options, &file) != 0)
         return CLI_USAGE;
     if (scene_build(&file, &scene, &model, err, sizeof err) != 0) {
@@ -220,8 +218,11 @@ int cli_sweep(int argc, char **argv)
     options.csv = csv;
     options.points = NULL;
     options.trace = trace;
-    options.show_progress = 1;
+    cli_progress_start(&bar, options.down ? "sweep down" : "sweep up");
+    options.progress = cli_progress_hook;
+    options.progress_context = &bar;
     failed = sweep_run(&scene, &options, &r) != 0;
+    cli_progress_end(&bar);
     {
         const int csv_lost = close_output(cli.out_path, csv, &r, points) != 0;
         const int trace_lost = close_output(cli.trace_path, trace, &r, points) != 0;

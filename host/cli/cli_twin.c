@@ -1,13 +1,14 @@
-/* cli_twin.c - the digital twin's observer on recorded signals (docs/twin.md,
- * "Observer"):
+/* cli_twin.c - the digital twin's commands (docs/twin.md, "Observer"):
  *
  *   beamslider twin-plant SCENE --out FILE.csv [...]   a test stream from a plant
  *   beamslider twin SCENE --measured FILE.csv --out EST.csv [...]   the twin on it
  *   beamslider twin-gains SCENE [...]                   the observer's constants as a C header
  *
- * The measured-signals file (written by twin-plant, or by any plant) has one
- * grammar and one reader, host/lib/measured_signals.h; `twin --measured -`
- * reads it from standard input, once, as it comes.
+ * Options, files and messages only: the plant, the stream's reader and
+ * writer, the design and the run are the twin wing's (host/lib/twin/). The
+ * measured-signals file (written by twin-plant, or by any plant) has one
+ * grammar, one reader and one writer, host/lib/twin/measured_signals.h;
+ * `twin --measured -` reads it from standard input, once, as it comes.
  */
 #include <errno.h>
 #include <math.h>
@@ -16,37 +17,52 @@
 #include <stdlib.h>
 #include <string.h>
 #include "bs_observer.h"
-#include "bs_platform.h"
 #include "cli.h"
-#include "measured_signals.h"
+#include "cli_progress.h"
 #include "observer_design.h"
 #include "out_c.h"
 #include "out_json.h"
-#include "out_text.h"
 #include "scene_build.h"
+#include "twin_plant.h"
+#include "twin_run.h"
 
 #define MAX_SETS 16
 
-static const char twin_usage[] =
-    "usage: beamslider twin SCENE.ini --measured FILE.csv|- --out EST.csv [--signal deflection|voltage]\n"
-    "                       [--latency S] [--noise SIGMA] [--accel-noise SIGMA] [--force-noise N]\n"
-    "                       [--s0 S] [--every N] [--open-loop] [--no-position] [--lockin TAU]\n"
-    "                       [--position-gain G] [--position-rate R] [--deadband D] [--score-after T] [--tolerance D]\n"
-    "                       [--map-frequencies F,F,...] [--set SECTION.KEY=VALUE]...\n"
-    "  runs the scene as a twin on the measured base acceleration, corrected from the measured\n"
-    "  signal (docs/twin.md, \"Observer\"); EST.csv every N steps: t, s_hat, s_sigma, amplitude,\n"
-    "  power, y, y_hat, s_true (if the file has it), phase_error, s_error. JSON summary on stdout.\n"
-    "  --measured -: a live stream on standard input, read once to its end (give --noise).\n"
-    "usage: beamslider twin-plant SCENE.ini --out FILE.csv [--signal deflection|voltage] [--snr DB]\n"
-    "                       [--accel-snr DB] [--bits B] [--seed N] [--latency S] [--freq-scale X]\n"
-    "                       [--s0 S] [--t-end T] [--set SECTION.KEY=VALUE]...\n"
-    "  a test stream: the scene (perturbed) as the plant, signals with white noise SNR dB below\n"
-    "  their RMS and B-bit quantisation over +-2x their largest value, the signal --latency late.\n"
-    "usage: beamslider twin-gains SCENE.ini --noise SIGMA [--signal deflection|voltage] [--latency S]\n"
-    "                       [--accel-noise SIGMA] [--force-noise N] [--map-frequencies F,F,...]\n"
-    "                       [--name NAME] [--set ...]\n"
-    "  the observer's constants (bs_observer_gains) as a C header on stdout. Response maps at\n"
-    "  --map-frequencies [Hz, ascending], else at the scene's excitation or across its schedule.\n";
+const char cli_twin_synopsis[] =
+    "beamslider twin SCENE.ini --measured FILE.csv|- --out EST.csv [--signal deflection|voltage]\n"
+    "        [--latency S] [--noise SIGMA] [--accel-noise SIGMA] [--force-noise N] [--s0 S] [--t-end T]\n"
+    "        [--every N] [--open-loop] [--no-position] [--lockin TAU] [--position-gain G]\n"
+    "        [--position-rate R] [--deadband D] [--outlier-gate K] [--score-after T] [--tolerance D]\n"
+    "        [--map-frequencies F,F,...] [--set section.key=value ...]";
+const char cli_twin_help[] =
+    "  the twin corrected from measured signals (docs/twin.md, \"Observer\")\n"
+    "  Runs the scene on the measured base acceleration, corrected from the measured signal; EST.csv every N steps: t,\n"
+    "  s_hat, s_sigma, amplitude, power, y, y_hat, s_true (if the file has it), phase_error,\n"
+    "  s_error, outliers (measurements skipped so far: beyond --outlier-gate K times the\n"
+    "  innovation's RMS, default 6, or a correction that would throw the slider off), health (1:\n"
+    "  one within the last lock-in time). JSON summary on stdout: within is the fraction of the\n"
+    "  rows from --score-after T (default 5 s) on whose s_hat is within --tolerance D (default\n"
+    "  0.005) of s_true; null, said why on stderr, when no row was scored (a stream without\n"
+    "  s_true, or one that ends before T).\n"
+    "  --measured -: a live stream on standard input, read once to its end (give --noise).\n";
+
+const char cli_twin_plant_synopsis[] =
+    "beamslider twin-plant SCENE.ini --out FILE.csv [--signal deflection|voltage] [--snr DB]\n"
+    "        [--accel-snr DB] [--bits B] [--seed N] [--latency S] [--freq-scale X] [--s0 S] [--t-end T]\n"
+    "        [--set section.key=value ...]";
+const char cli_twin_plant_help[] =
+    "  a measured-signals file from a (perturbed) plant (docs/twin.md)\n"
+    "  The scene as the plant, its modal frequencies times --freq-scale, signals with white noise SNR dB below their RMS and B-bit\n"
+    "  quantisation over +-2x their largest value, the signal --latency late (docs/twin.md).\n"
+    "  JSON summary on stdout.\n";
+
+const char cli_twin_gains_synopsis[] =
+    "beamslider twin-gains SCENE.ini --noise SIGMA [--signal deflection|voltage] [--latency S]\n"
+    "        [--accel-noise SIGMA] [--force-noise N] [--map-frequencies F,F,...] [--name NAME]\n"
+    "        [--set section.key=value ...]";
+const char cli_twin_gains_help[] =
+    "  the observer's constants (bs_observer_gains) as a C header on stdout\n"
+    "  Response maps at --map-frequencies [Hz, ascending], else at the scene's excitation or across its schedule.\n";
 
 /* The options of the three commands (each uses some). */
 typedef struct twin_cli {
@@ -66,7 +82,7 @@ typedef struct twin_cli {
     double freq_scale;
     long every;
     int open_loop, no_position;
-    double lockin, position_gain, position_rate, position_deadband;
+    double lockin, position_gain, position_rate, position_deadband, outlier_gate;
     double score_after, tolerance;
 } twin_cli;
 
@@ -112,6 +128,7 @@ static void cli_defaults(twin_cli *c)
     c->position_gain = BS_OBSERVER_DEFAULT_POSITION_GAIN;
     c->position_rate = BS_OBSERVER_DEFAULT_POSITION_RATE;
     c->position_deadband = BS_OBSERVER_DEFAULT_POSITION_DEADBAND;
+    c->outlier_gate = BS_OBSERVER_DEFAULT_OUTLIER_GATE;
     c->score_after = 5.0;
     c->tolerance = 0.005;
     c->name = "bs_observer_gains_scene";
@@ -179,6 +196,7 @@ static int parse_valued(twin_cli *c, const char *option, const char *value)
     else if (!strcmp(option, "--position-gain")) return parse_number(option, value, 0.0, 1e3, &c->position_gain);
     else if (!strcmp(option, "--position-rate")) return parse_number(option, value, 0.0, 1e3, &c->position_rate);
     else if (!strcmp(option, "--deadband")) return parse_number(option, value, 0.0, 1.0, &c->position_deadband);
+    else if (!strcmp(option, "--outlier-gate")) return parse_number(option, value, 1.5, 1e6, &c->outlier_gate);
     else if (!strcmp(option, "--score-after")) return parse_number(option, value, 0.0, HUGE_VAL, &c->score_after);
     else if (!strcmp(option, "--tolerance")) return parse_number(option, value, 0.0, 1.0, &c->tolerance);
     else if (!strcmp(option, "--bits") || !strcmp(option, "--every") || !strcmp(option, "--seed")) {
@@ -234,7 +252,7 @@ static int load_scene(const twin_cli *c, scene_file *file, bs_scene *scene, scen
         cli_error("%s", err);
         return -1;
     }
-    for (i = 0; i < c->set_count; ++i) /* checked as a file line is (host/lib/scene_ini.h) */
+    for (i = 0; i < c->set_count; ++i) /* checked as a file line is (host/lib/scene/scene_ini.h) */
         if (scene_set_assignment(file, "--set", c->sets[i], err, sizeof err) != 0) {
             cli_error("%s", err);
             return -1;
@@ -253,193 +271,85 @@ static int load_scene(const twin_cli *c, scene_file *file, bs_scene *scene, scen
             return -1;
         }
     }
-    if (scene_build(file, scene, model, err, sizeof err) != 0) {
+    if (scene_build(file, scene, model, err, sizeof err) != 0
+        || twin_plant_scale_frequencies(model, scene, c->freq_scale, err, sizeof err) != 0) {
         cli_error("%s", err);
         return -1;
-    }
-    if (c->freq_scale != 1.0) { /* every modal frequency times X, damping ratio kept */
-        scene_data *d = &model->data;
-        int k;
-        for (k = 0; k < d->n_modes; ++k) {
-            d->omega_sq[k] *= c->freq_scale * c->freq_scale;
-            d->damping[k] *= c->freq_scale;
-            if (d->implicit)
-                d->mode_gain[k] = 1.0 / (1.0 + d->theta * d->dt * d->damping[k]
-                                         + d->theta * d->theta * d->dt * d->dt * d->omega_sq[k]);
-        }
-        scene_data_round(d, scene);
-        if (bs_scene_check(scene, NULL) != BS_OK) {
-            cli_error("--freq-scale %g: the scene is no longer valid (explicit limit omega_max dt < 2?)",
-                      c->freq_scale);
-            return -1;
-        }
     }
     return 0;
 }
 
-/* --latency in steps; beyond BS_OBSERVER_MAX_LATENCY (refused by the
- * callers) the quotient is not converted: it may exceed a long. */
-static long latency_steps(const twin_cli *c, double dt)
+/* A scene as the three commands read it: large, on the heap. */
+typedef struct twin_scene {
+    scene_file file;
+    bs_scene scene;
+    scene_model model;
+    bs_observer_gains gains;
+} twin_scene;
+
+static twin_scene *new_scene(void)
 {
-    const double steps = c->latency / dt;
-    return steps < BS_OBSERVER_MAX_LATENCY + 1.0 ? lround(steps) : BS_OBSERVER_MAX_LATENCY + 1;
+    twin_scene *t = malloc(sizeof *t);
+    if (!t)
+        cli_error("out of memory");
+    return t;
 }
 
 /* ---- twin-plant ---- */
 
-/* xorshift64* and Box-Muller: reproducible white Gaussian noise. */
-static double uniform(uint64_t *state)
+static int twin_plant(twin_scene *t, twin_cli *c)
 {
-    *state ^= *state >> 12;
-    *state ^= *state << 25;
-    *state ^= *state >> 27;
-    return ((double)((*state * UINT64_C(2685821657736338717)) >> 11) + 0.5) / 9007199254740992.0;
-}
-
-static double gaussian(uint64_t *state)
-{
-    const double u1 = uniform(state), u2 = uniform(state);
-    return sqrt(-2.0 * log(u1)) * cos(6.283185307179586 * u2);
-}
-
-static double quantise(double x, double full_scale, int bits)
-{
-    double lsb;
-    if (bits <= 0 || !(full_scale > 0.0))
-        return x;
-    lsb = 2.0 * full_scale / ldexp(1.0, bits);
-    x = floor(x / lsb + 0.5) * lsb;
-    return fmax(-full_scale, fmin(full_scale - lsb, x));
-}
-
-static double plant_signal(const bs_sim *sim, int signal)
-{
-    if (signal == BS_SIGNAL_VOLTAGE) {
-        bs_transducer_output out;
-        bs_sim_get_transducer(sim, &out);
-        return (double)out.voltage;
-    }
-    return (double)bs_sim_sensor(sim);
-}
-
-/* Statistics of one clean run: RMS and largest magnitude of a and the signal. */
-typedef struct plant_stats {
-    double a_sq, y_sq, a_max, y_max;
-    uint64_t steps;
-} plant_stats;
-
-static int plant_pass(const bs_scene *scene, const scene_file *file, const twin_cli *c, uint64_t steps,
-                      plant_stats *stats, FILE *out, double y_noise, double a_noise)
-{
-    static bs_sim sim;
-    static double delay[BS_OBSERVER_MAX_LATENCY + 1];
-    const long d = latency_steps(c, file->params.dt);
-    uint64_t k, rng = 0x9e3779b97f4a7c15u ^ (uint64_t)c->seed * 0xbf58476d1ce4e5b9u;
-    bs_status status = bs_sim_init(&sim, scene, BS_MODEL_FREE, (bs_real)file->params.s0);
-    int i;
-
-    if (status != BS_OK) {
-        cli_error("plant: %s", bs_status_text(status));
-        return -1;
-    }
-    bs_sim_set_solver(&sim, &(bs_solver_options){ file->params.solver_max_sweeps, (bs_real)file->params.solver_tol_rel,
-                                                   (bs_real)file->params.solver_tol_abs, file->params.solver_residual });
-    for (i = 0; i <= BS_OBSERVER_MAX_LATENCY; ++i)
-        delay[i] = plant_signal(&sim, c->signal);
-    if (!out)
-        memset(stats, 0, sizeof *stats);
-    for (k = 1; k <= steps; ++k) {
-        double a, y;
-        status = bs_sim_step(&sim);
-        if (status != BS_OK) {
-            cli_error("plant: stopped at step %llu: %s", (unsigned long long)k, bs_status_text(status));
-            return -1;
-        }
-        a = (double)bs_sim_base_acceleration(&sim);
-        delay[k % (BS_OBSERVER_MAX_LATENCY + 1)] = plant_signal(&sim, c->signal);
-        y = delay[(k + (uint64_t)(BS_OBSERVER_MAX_LATENCY + 1) - (uint64_t)d) % (BS_OBSERVER_MAX_LATENCY + 1)];
-        if (!out) {
-            stats->a_sq += a * a;
-            stats->y_sq += y * y;
-            stats->a_max = fmax(stats->a_max, fabs(a));
-            stats->y_max = fmax(stats->y_max, fabs(y));
-            continue;
-        }
-        a = quantise(a + a_noise * gaussian(&rng), 2.0 * stats->a_max, c->bits);
-        y = quantise(y + y_noise * gaussian(&rng), 2.0 * stats->y_max, c->bits);
-        if (fprintf(out, "%.12g,%.9g,%.9g,%.9g\n", (double)k * file->params.dt, a, y, /* t to 1e-12: long runs */
-                    (double)bs_sim_position(&sim)) < 0)
-            return -1;
-    }
-    stats->steps = steps;
-    return 0;
-}
-
-static int cli_twin_plant(int argc, char **argv)
-{
-    static scene_file file;
-    static bs_scene scene;
-    static scene_model model;
-    twin_cli c;
-    plant_stats stats;
+    twin_plant_options plant;
+    twin_plant_result result;
     cli_output output;
-    char plant[SCENE_TEXT];
-    double y_noise, a_noise, a_snr;
-    uint64_t steps;
-    int status, failed;
+    char err[1024];
+    int status, write_failed;
 
-    if (parse_options(argc, argv, "twin-plant", &c) != 0 || load_scene(&c, &file, &scene, &model) != 0)
-        return CLI_USAGE;
-    if (c.signal < 0)
-        c.signal = BS_SIGNAL_DEFLECTION;
-    if (c.signal == BS_SIGNAL_VOLTAGE && scene.load != BS_LOAD_RESISTOR) {
-        cli_error("--signal voltage needs [transducer] load = resistor (e.g. --set transducer.load=resistor)");
+    plant.signal = c->signal < 0 ? BS_SIGNAL_DEFLECTION : c->signal;
+    plant.latency = twin_latency_steps(c->latency, t->file.params.dt);
+    plant.snr = c->snr;
+    plant.accel_snr = c->accel_snr;
+    plant.bits = c->bits;
+    plant.seed = c->seed;
+    plant.freq_scale = c->freq_scale;
+    if (twin_plant_check(&t->file, &t->scene, &plant, err, sizeof err) != 0) {
+        if (plant.latency > BS_OBSERVER_MAX_LATENCY)
+            cli_error("--latency %g: at most %d steps (%g s)", c->latency, BS_OBSERVER_MAX_LATENCY,
+                      BS_OBSERVER_MAX_LATENCY * t->file.params.dt);
+        else
+            cli_error("%s", err);
         return CLI_USAGE;
     }
-    if (latency_steps(&c, file.params.dt) > BS_OBSERVER_MAX_LATENCY) {
-        cli_error("--latency %g: at most %d steps (%g s)", c.latency, BS_OBSERVER_MAX_LATENCY,
-                  BS_OBSERVER_MAX_LATENCY * file.params.dt);
-        return CLI_USAGE;
-    }
-    if (!c.out_path) {
+    if (!c->out_path) {
         cli_error("twin-plant needs --out FILE.csv");
         return CLI_USAGE;
     }
-    steps = (uint64_t)llround(file.params.t_end / file.params.dt);
-    if (plant_pass(&scene, &file, &c, steps, &stats, NULL, 0.0, 0.0) != 0)
+    if (twin_plant_measure(&t->file, &t->scene, &plant, &result, err, sizeof err) != 0) {
+        cli_error("%s", err);
         return CLI_FAILED;
-    a_snr = isnan(c.accel_snr) ? c.snr : c.accel_snr;
-    y_noise = isinf(c.snr) ? 0.0 : sqrt(stats.y_sq / (double)steps) * pow(10.0, -c.snr / 20.0);
-    a_noise = isinf(a_snr) ? 0.0 : sqrt(stats.a_sq / (double)steps) * pow(10.0, -a_snr / 20.0);
+    }
     output.option = "--out";
-    output.path = c.out_path;
-    snprintf(plant, sizeof plant, "%s", file.params.name);
-    out_text_one_line(plant); /* a line break in the name would forge header lines */
-    if ((status = cli_open_outputs(&output, 1, &file)) != CLI_OK)
+    output.path = c->out_path;
+    if ((status = cli_open_outputs(&output, 1, &t->file)) != CLI_OK)
         return status;
-    /* exactly the grammar of host/lib/measured_signals.h */
-    failed = fprintf(output.file,
-                     "# beamslider measured signals (docs/twin.md, \"Observer\")\n"
-                     "# plant = %s, s0 %.6g, freq_scale %.6g, snr %g dB, accel_snr %g dB, bits %d, seed %lu\n"
-                     "# sample_rate = %.12g Hz\n# signal = %s\n# signal_unit = %s\n# base_accel_unit = m/s^2\n"
-                     "# latency = %.9g s\n# noise = %.9g %s\n# accel_noise = %.9g m/s^2\n"
-                     "t,base_accel,signal,s_true\n",
-                     plant, file.params.s0, c.freq_scale, c.snr, a_snr, c.bits, c.seed,
-                     1.0 / file.params.dt, c.signal == BS_SIGNAL_VOLTAGE ? "voltage" : "deflection",
-                     c.signal == BS_SIGNAL_VOLTAGE ? "V" : "m", (double)latency_steps(&c, file.params.dt) * file.params.dt,
-                     fmax(y_noise, 1e-30), c.signal == BS_SIGNAL_VOLTAGE ? "V" : "m", a_noise) < 0;
-    failed = failed || plant_pass(&scene, &file, &c, steps, &stats, output.file, y_noise, a_noise) != 0;
-    if (cli_close_output(c.out_path, output.file, failed ? errno : 0) != 0 || failed)
+    if (twin_plant_write(&t->file, &t->scene, &plant, &result, output.file, &write_failed, err, sizeof err) != 0) {
+        const int write_errno = errno;
+        if (!write_failed)
+            cli_error("%s", err);
+        cli_close_output(c->out_path, output.file, write_failed ? write_errno : 0);
+        return CLI_FAILED;
+    }
+    if (cli_close_output(c->out_path, output.file, 0) != 0)
         return CLI_FAILED;
     {
         out_json j;
         out_json_start(&j);
-        out_json_text(&j, "plant", file.params.name);
-        out_json_count(&j, "steps", (unsigned long long)steps);
-        out_json_number(&j, "signal_rms", "%.6g", sqrt(stats.y_sq / (double)steps));
-        out_json_number(&j, "noise", "%.6g", y_noise);
-        out_json_number(&j, "accel_rms", "%.6g", sqrt(stats.a_sq / (double)steps));
-        out_json_number(&j, "accel_noise", "%.6g", a_noise);
+        out_json_text(&j, "plant", t->file.params.name);
+        out_json_count(&j, "steps", (unsigned long long)result.steps);
+        out_json_number(&j, "signal_rms", "%.6g", result.signal_rms);
+        out_json_number(&j, "noise", "%.6g", result.noise);
+        out_json_number(&j, "accel_rms", "%.6g", result.accel_rms);
+        out_json_number(&j, "accel_noise", "%.6g", result.accel_noise);
         if (out_json_finish(&j, stdout) != 0) {
             cli_error("cannot write the summary (out of memory?)");
             return CLI_FAILED;
@@ -448,293 +358,167 @@ static int cli_twin_plant(int argc, char **argv)
     return CLI_OK;
 }
 
-/* ---- the measured-signals file (host/lib/measured_signals.h: the one reader) ---- */
-
-/* What the twin takes from the file before it runs. */
-typedef struct measured_file {
-    measured_reader reader;
-    int is_stdin;          /* --measured -: read once, as it comes */
-    double y_sq;           /* sum of signal^2 over the rows (a file's first pass) */
-} measured_file;
-
-/* Opens --measured: the header (its rate must be 1/dt of the scene) and, for
- * a file, every row checked in a first pass before anything is written.
- * Standard input is read once: the rows are checked as the twin reads them.
- * 0, or -1 after reporting (nothing left open). */
-static int open_measured(measured_file *m, const char *path, double dt)
-{
-    measured_reader *r = &m->reader;
-    measured_row row;
-    char err[1024];
-    int status;
-
-    memset(m, 0, sizeof *m);
-    m->is_stdin = !strcmp(path, "-");
-    if (measured_open(r, path, err, sizeof err) != 0) {
-        cli_error("%s", err);
-        return -1;
-    }
-    if (!(fabs(r->header.rate * dt - 1.0) <= 1e-9)) {
-        cli_error("%s: sample_rate = %g Hz, but the scene's dt = %g s needs %.10g Hz (resample the record)", r->path,
-                  r->header.rate, dt, 1.0 / dt);
-        measured_close(r);
-        return -1;
-    }
-    if (m->is_stdin)
-        return 0;
-    while ((status = measured_next(r, &row, err, sizeof err)) > 0)
-        m->y_sq += row.signal * row.signal;
-    if (status < 0 || measured_rewind(r, err, sizeof err) != 0) {
-        cli_error("%s", err);
-        measured_close(r);
-        return -1;
-    }
-    return 0;
-}
-
 /* ---- twin-gains and twin ---- */
 
-static int design(const twin_cli *c, const scene_file *file, const scene_model *model, const bs_scene *scene,
-                  int signal, double noise,
-                  double accel_noise, bs_observer_gains *gains)
+static int design(const twin_cli *c, twin_scene *t, int signal, double noise, double accel_noise)
 {
     observer_design_options o = observer_design_defaults(noise);
+    cli_progress bar;
     char err[1024];
+    int failed;
+    const long latency = twin_latency_steps(c->latency, t->file.params.dt);
     o.signal = signal;
     o.force_noise = c->force_noise;
     o.accel_noise = isnan(accel_noise) ? 0.0 : accel_noise;
-    o.latency = (int)latency_steps(c, file->params.dt);
     o.map_count = c->map_count;
     memcpy(o.map_frequency, c->map_frequency, sizeof o.map_frequency);
-    if (o.latency > BS_OBSERVER_MAX_LATENCY) {
+    if (latency > BS_OBSERVER_MAX_LATENCY) {
         cli_error("--latency %g: at most %d steps (%g s)", c->latency, BS_OBSERVER_MAX_LATENCY,
-                  BS_OBSERVER_MAX_LATENCY * file->params.dt);
+                  BS_OBSERVER_MAX_LATENCY * t->file.params.dt);
         return -1;
     }
-    if (observer_design(file, model, scene, &o, gains, err, sizeof err) != 0) {
+    o.latency = (int)latency;
+    cli_progress_start(&bar, "observer design (response maps)");
+    o.progress = cli_progress_hook;
+    o.progress_context = &bar;
+    failed = observer_design(&t->file, &t->model, &t->scene, &o, &t->gains, err, sizeof err) != 0;
+    cli_progress_end(&bar);
+    if (failed) {
         cli_error("%s", err);
         return -1;
     }
     return 0;
 }
 
-static int cli_twin_gains(int argc, char **argv)
+static int twin_gains(twin_scene *t, twin_cli *c)
 {
-    static scene_file file;
-    static bs_scene scene;
-    static scene_model model;
-    static bs_observer_gains gains;
     char comment[1024];
-    twin_cli c;
-    if (parse_options(argc, argv, "twin-gains", &c) != 0 || load_scene(&c, &file, &scene, &model) != 0)
-        return CLI_USAGE;
-    if (isnan(c.noise)) {
+    if (isnan(c->noise)) {
         cli_error("twin-gains needs --noise SIGMA (the signal's noise standard deviation)");
         return CLI_USAGE;
     }
-    if (c.signal < 0)
-        c.signal = BS_SIGNAL_DEFLECTION;
-    if (design(&c, &file, &model, &scene, c.signal, c.noise, c.accel_noise, &gains) != 0)
+    if (c->signal < 0)
+        c->signal = BS_SIGNAL_DEFLECTION;
+    if (design(c, t, c->signal, c->noise, c->accel_noise) != 0)
         return CLI_USAGE;
     snprintf(comment, sizeof comment, "%s: signal %s, noise %g, accel noise %g, force noise %g N/sqrt(Hz), latency %d steps",
-             file.params.name, c.signal ? "voltage" : "deflection", c.noise, isnan(c.accel_noise) ? 0.0 : c.accel_noise,
-             c.force_noise, gains.latency);
-    return observer_print_gains(stdout, &gains, c.name, comment) == 0 ? CLI_OK : CLI_FAILED;
+             t->file.params.name, c->signal ? "voltage" : "deflection", c->noise,
+             isnan(c->accel_noise) ? 0.0 : c->accel_noise, c->force_noise, t->gains.latency);
+    return observer_print_gains(stdout, &t->gains, c->name, comment) == 0 ? CLI_OK : CLI_FAILED;
 }
 
-/* What the twin run counts for its summary. */
-typedef struct twin_tally {
-    uint64_t rows, scored, within;
-    double innovation_sq, error_sq, s_true, elapsed;
-    bs_observer_estimate last;
-} twin_tally;
-
-static int write_estimate(FILE *out, double t, const bs_observer_estimate *e, double s_true)
+static twin_run_options run_options(const twin_cli *c)
 {
-    return fprintf(out, "%.9g,%.9g,%.4g,%.6g,%.6g,%.6g,%.6g,%.9g,%.5g,%.5g\n", t, (double)e->s, (double)e->s_sigma,
-                   (double)e->amplitude, (double)e->power, (double)e->measurement, (double)e->prediction, s_true,
-                   (double)e->phase_error, (double)e->s_error) < 0;
+    twin_run_options o;
+    o.observer = bs_observer_defaults();
+    o.observer.correct_beam = !c->open_loop;
+    o.observer.correct_position = !c->open_loop && !c->no_position;
+    o.observer.lockin_time = (bs_real)c->lockin;
+    o.observer.position_gain = (bs_real)c->position_gain;
+    o.observer.position_rate = (bs_real)c->position_rate;
+    o.observer.position_deadband = (bs_real)c->position_deadband;
+    o.observer.outlier_gate = (bs_real)c->outlier_gate;
+    o.every = c->every;
+    o.score_after = c->score_after;
+    o.tolerance = c->tolerance;
+    return o;
 }
 
-static int run_twin(const twin_cli *c, const bs_scene *scene, const scene_file *file, const bs_observer_gains *gains,
-                    measured_file *m, FILE *out, twin_tally *tally, int *bad_input)
+static int twin(twin_scene *t, twin_cli *c)
 {
-    static bs_sim sim;
-    static bs_observer obs;
-    bs_observer_options options = bs_observer_defaults();
-    measured_row sample;
-    char err[1024];
-    double t, a, y, s_true;
-    int row;
-    bs_status status = bs_sim_init(&sim, scene, BS_MODEL_FREE, (bs_real)file->params.s0);
-
-    if (status == BS_OK)
-        status = bs_sim_set_solver(&sim, &(bs_solver_options){ file->params.solver_max_sweeps,
-                                                                (bs_real)file->params.solver_tol_rel,
-                                                                (bs_real)file->params.solver_tol_abs,
-                                                                file->params.solver_residual });
-    options.correct_beam = !c->open_loop;
-    options.correct_position = !c->open_loop && !c->no_position;
-    options.lockin_time = (bs_real)c->lockin;
-    options.position_gain = (bs_real)c->position_gain;
-    options.position_rate = (bs_real)c->position_rate;
-    options.position_deadband = (bs_real)c->position_deadband;
-    if (status == BS_OK)
-        status = bs_observer_init(&obs, &sim, gains, &options);
-    if (status != BS_OK) {
-        cli_error("twin: %s", bs_status_text(status));
-        return -1;
-    }
-    memset(tally, 0, sizeof *tally);
-    tally->s_true = NAN;
-    if (fprintf(out, "t,s_hat,s_sigma,amplitude,power,y,y_hat,s_true,phase_error,s_error\n") < 0)
-        return -1;
-    while ((row = measured_next(&m->reader, &sample, err, sizeof err)) > 0) {
-        t = sample.t;
-        a = sample.base_accel;
-        y = sample.signal;
-        s_true = sample.s_true;
-        status = bs_observer_step(&obs, &sim, (bs_real)a, (bs_real)y);
-        if (status != BS_OK) {
-            cli_error("%s:%ld: the twin stopped: %s", m->reader.path, m->reader.lines.line, bs_status_text(status));
-            return -1;
-        }
-        tally->rows += 1;
-        bs_observer_get(&obs, &tally->last);
-        tally->innovation_sq += (double)tally->last.innovation * (double)tally->last.innovation;
-        tally->s_true = s_true;
-        if (!isnan(s_true) && t >= c->score_after) {
-            const double error = (double)tally->last.s - s_true;
-            tally->scored += 1;
-            tally->within += fabs(error) <= c->tolerance;
-            tally->error_sq += error * error;
-        }
-        if (tally->rows % (uint64_t)c->every == 0 && write_estimate(out, t, &tally->last, s_true) != 0)
-            return -1;
-    }
-    if (row < 0) { /* a file's rows were checked before: a bad row of standard input */
-        cli_error("%s%s", err, m->is_stdin ? " (the estimates up to it are written)" : "");
-        *bad_input = 1;
-        return -1;
-    }
-    return 0;
-}
-
-/* The summary through the JSON writer (out_json.h: NaN as null, such as
- * s_true without truth in the file, or within when nothing was scored). */
-static int print_summary(const twin_cli *c, const scene_file *file, const bs_observer_gains *gains,
-                         const twin_tally *tally, double noise)
-{
-    const int scored = tally->scored > 0;
-    out_json j;
-    out_json_start(&j);
-    out_json_text(&j, "scene", file->params.name);
-    out_json_text(&j, "signal", c->signal ? "voltage" : "deflection");
-    out_json_count(&j, "rows", (unsigned long long)tally->rows);
-    out_json_number(&j, "noise", "%.6g", noise);
-    out_json_int(&j, "latency_steps", gains->latency);
-    out_json_int(&j, "beam_correction", !c->open_loop);
-    out_json_int(&j, "position_correction", !c->open_loop && !c->no_position);
-    out_json_number(&j, "rms_innovation", "%.6g", tally->rows ? sqrt(tally->innovation_sq / (double)tally->rows) : 0.0);
-    out_json_number(&j, "s_final", "%.6f", (double)tally->last.s);
-    out_json_number(&j, "s_sigma_final", "%.4g", (double)tally->last.s_sigma);
-    out_json_number(&j, "s_true_final", "%.6f", tally->s_true);
-    out_json_number(&j, "score_after", "%g", c->score_after);
-    out_json_number(&j, "tolerance", "%g", c->tolerance);
-    out_json_number(&j, "within", "%.4f", scored ? (double)tally->within / (double)tally->scored : (double)NAN);
-    out_json_number(&j, "rms_s_error", "%.6g", scored ? sqrt(tally->error_sq / (double)tally->scored) : (double)NAN);
-    out_json_number(&j, "wall_s", "%.3f", tally->elapsed);
-    return out_json_finish(&j, stdout);
-}
-
-static int cli_twin_run(int argc, char **argv)
-{
-    static scene_file file;
-    static bs_scene scene;
-    static scene_model model;
-    static bs_observer_gains gains;
-    twin_cli c;
-    measured_file m;
+    const twin_run_options options = run_options(c);
+    twin_stream m;
     twin_tally tally;
     cli_output output;
     cli_input measured_input;
     const measured_header *header;
-    double noise, start;
+    char err[1024];
+    double noise;
     int status, failed, bad_input = 0;
 
-    if (parse_options(argc, argv, "twin", &c) != 0 || load_scene(&c, &file, &scene, &model) != 0)
-        return CLI_USAGE;
-    if (!c.measured_path || !c.out_path) {
+    if (!c->measured_path || !c->out_path) {
         cli_error("twin needs --measured FILE.csv and --out EST.csv");
         return CLI_USAGE;
     }
-    if (open_measured(&m, c.measured_path, file.params.dt) != 0)
-        return CLI_USAGE;
-    header = &m.reader.header;
-    if (c.signal >= 0 && c.signal != header->signal) {
-        cli_error("--signal %s contradicts %s's signal = %s", c.signal ? "voltage" : "deflection", m.reader.path,
-                  measured_signal_name(header->signal));
-        measured_close(&m.reader);
+    if (twin_stream_open(&m, c->measured_path, t->file.params.dt, err, sizeof err) != 0) {
+        cli_error("%s", err);
         return CLI_USAGE;
     }
-    c.signal = header->signal == MEASURED_VOLTAGE ? BS_SIGNAL_VOLTAGE : BS_SIGNAL_DEFLECTION;
+    header = &m.reader.header;
+    if (c->signal >= 0 && c->signal != header->signal) {
+        cli_error("--signal %s contradicts %s's signal = %s", c->signal ? "voltage" : "deflection", m.reader.path,
+                  measured_signal_name(header->signal));
+        twin_stream_close(&m);
+        return CLI_USAGE;
+    }
+    c->signal = header->signal == MEASURED_VOLTAGE ? BS_SIGNAL_VOLTAGE : BS_SIGNAL_DEFLECTION;
     /* the noise: stated, else the file's, else 40 dB below the signal's RMS
      * (a file's first pass measured it; standard input cannot be measured
      * in advance) */
-    if (isnan(c.noise) && isnan(header->noise) && m.is_stdin) {
+    if (isnan(c->noise) && isnan(header->noise) && m.is_stdin) {
         cli_error("--measured -: standard input is read once, so the twin cannot measure the signal's RMS "
                   "first: give --noise SIGMA or a '# noise = ...' header line");
-        measured_close(&m.reader);
+        twin_stream_close(&m);
         return CLI_USAGE;
     }
-    noise = !isnan(c.noise) ? c.noise : !isnan(header->noise) ? header->noise
-                                                              : 0.01 * sqrt(m.y_sq / (double)m.reader.rows);
-    if (design(&c, &file, &model, &scene, c.signal, noise,
-               !isnan(c.accel_noise) ? c.accel_noise : header->accel_noise, &gains) != 0) {
-        measured_close(&m.reader);
+    noise = !isnan(c->noise) ? c->noise : !isnan(header->noise) ? header->noise
+                                                               : 0.01 * sqrt(m.y_sq / (double)m.reader.rows);
+    if (design(c, t, c->signal, noise, !isnan(c->accel_noise) ? c->accel_noise : header->accel_noise) != 0) {
+        twin_stream_close(&m);
         return CLI_USAGE;
     }
     output.option = "--out";
-    output.path = c.out_path;
+    output.path = c->out_path;
     measured_input.option = "--measured";
-    measured_input.path = c.measured_path;
-    if ((status = cli_open_outputs_reading(&output, 1, &file, &measured_input, 1)) != CLI_OK) {
-        measured_close(&m.reader);
+    measured_input.path = c->measured_path;
+    if ((status = cli_open_outputs_reading(&output, 1, &t->file, &measured_input, 1)) != CLI_OK) {
+        twin_stream_close(&m);
         return status;
     }
-    start = bs_platform_seconds();
-    failed = run_twin(&c, &scene, &file, &gains, &m, output.file, &tally, &bad_input) != 0;
-    tally.elapsed = bs_platform_seconds() - start;
-    measured_close(&m.reader);
-    if (cli_close_output(c.out_path, output.file, 0) != 0)
+    failed = twin_run(&t->file, &t->scene, &t->gains, &options, &m, output.file, &tally, &bad_input, err,
+                      sizeof err) != 0;
+    twin_stream_close(&m);
+    if (failed)
+        cli_error("%s", err);
+    if (cli_close_output(c->out_path, output.file, 0) != 0)
         failed = 1;
-    if (print_summary(&c, &file, &gains, &tally, noise) != 0) {
+    if (!failed && twin_unscored_reason(&tally, &options, err, sizeof err))
+        fprintf(stderr, "beamslider: note: no row was scored (within and rms_s_error are null): %s\n", err);
+    if (twin_print_summary(stdout, &t->file, &t->gains, &options, &tally, noise) != 0) {
         cli_error("cannot write the summary (out of memory?)");
         failed = 1;
     }
     return bad_input ? CLI_USAGE : failed ? CLI_FAILED : CLI_OK;
 }
 
-static int wants_help(int argc, char **argv)
+/* ---- the three commands ---- */
+
+/* Parses the command's options, reads its scene and runs body. */
+static int twin_command(int argc, char **argv, const char *command, int (*body)(twin_scene *, twin_cli *))
 {
-    if (argc >= 1 && (!strcmp(argv[0], "--help") || !strcmp(argv[0], "-h"))) {
-        fputs(twin_usage, stdout);
-        return 1;
-    }
-    return 0;
+    twin_cli c;
+    twin_scene *t;
+    int status;
+    if (parse_options(argc, argv, command, &c) != 0)
+        return CLI_USAGE;
+    if (!(t = new_scene()))
+        return CLI_FAILED;
+    status = load_scene(&c, &t->file, &t->scene, &t->model) != 0 ? CLI_USAGE : body(t, &c);
+    free(t);
+    return status;
 }
 
 int cli_twin(int argc, char **argv)
 {
-    return wants_help(argc, argv) ? CLI_OK : cli_twin_run(argc, argv);
+    return twin_command(argc, argv, "twin", twin);
 }
 
-int cli_twin_plant_command(int argc, char **argv)
+int cli_twin_plant(int argc, char **argv)
 {
-    return wants_help(argc, argv) ? CLI_OK : cli_twin_plant(argc, argv);
+    return twin_command(argc, argv, "twin-plant", twin_plant);
 }
 
-int cli_twin_gains_command(int argc, char **argv)
+int cli_twin_gains(int argc, char **argv)
 {
-    return wants_help(argc, argv) ? CLI_OK : cli_twin_gains(argc, argv);
+    return twin_command(argc, argv, "twin-gains", twin_gains);
 }

@@ -1,48 +1,53 @@
-/* main.c - beamslider: command dispatch. */
+/* main.c - beamslider: the table of commands and the dispatch through it.
+ * host/cli/cli.h has the checklist for adding a command. */
 #include <errno.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 #include "beamslider.h"
 #include "bs_revision.h"
 #include "cli.h"
 
-static const char usage[] =
-    "usage: beamslider COMMAND ...\n"
-    "  modes SCENE.ini        modal data: f_k [Hz], gamma_k, phi_k(4/7) per mode\n"
-    "  gen SCENE.ini          C header of the scene for a compile-time (embedded) build\n"
-    "  sweep SCENE.ini --dir up|down --out FILE.csv [--from 0] [--to 0.5] [--step 0.005]\n"
-    "                [--hold 100] [--record 25] [--set section.key=value ...]\n"
-    "                         quasi-static PCS sweep: amplitude and transport per s~\n"
-    "  run SCENE.ini [--model free|pcs] [--s0 S] [--t-end T] [--dt DT] [--pgs-iters K]\n"
-    "                [--out FILE.csv] [--every N] [--periods FILE.csv] [--set section.key=value ...]\n"
-    "                         simulate; CSV rows every N steps, one row per excitation\n"
-    "                         period with --periods, JSON summary on stdout\n"
-    "  twin SCENE.ini --measured FILE.csv|- --out EST.csv [--signal deflection|voltage]\n"
-    "                [--latency S] [--noise SIGMA] ...\n"
-    "                         the twin corrected from measured signals (beamslider twin --help)\n"
-    "  twin-plant SCENE.ini --out FILE.csv [--snr DB] [--freq-scale X] ...\n"
-    "                         a measured-signals file from a (perturbed) plant\n"
-    "  twin-gains SCENE.ini --noise SIGMA [...]\n"
-    "                         the observer's constants as a C header\n"
-    "  map SCENE.ini --vary section.key=FROM:TO:STEP|v1,v2,... [--repeat K] [--jobs N]\n"
-    "                [--shard I/N] [--set section.key=value ...] --out DIR\n"
-    "                         a grid of runs, resumable and sharded (beamslider map --help)\n"
-    "  map-merge DIR          the merged tables of a map's shards\n"
-    "  map-plot DIR [--x FIELD --y FIELD] [--mark X,Y,LABEL ...]\n"
-    "                         heatmaps of a map with gnuplot (beamslider map-plot --help)\n"
-    "  fields                 the reference of every scene field (Markdown; docs/fields.md)\n"
-    "  --version              version, source revision and precision\n"
-    "core precision: " BS_REAL_NAME "\n";
+typedef struct cli_command {
+    const char *name;
+    int (*run)(int argc, char **argv); /* the arguments after the name */
+    const char *synopsis;              /* every option: "beamslider run SCENE.ini [--model free|pcs] ..." */
+    const char *help;                  /* what it does, lines indented by two */
+} cli_command;
 
-void cli_error(const char *format, ...)
+/* The commands, in the order `beamslider --help` lists them. */
+static const cli_command commands[] = {
+    { "modes", cli_modes, cli_modes_synopsis, cli_modes_help },
+    { "gen", cli_gen, cli_gen_synopsis, cli_gen_help },
+    { "sweep", cli_sweep, cli_sweep_synopsis, cli_sweep_help },
+    { "run", cli_run, cli_run_synopsis, cli_run_help },
+    { "twin", cli_twin, cli_twin_synopsis, cli_twin_help },
+    { "twin-plant", cli_twin_plant, cli_twin_plant_synopsis, cli_twin_plant_help },
+    { "twin-gains", cli_twin_gains, cli_twin_gains_synopsis, cli_twin_gains_help },
+    { "map", cli_map, cli_map_synopsis, cli_map_help },
+    { "map-merge", cli_map_merge, cli_map_merge_synopsis, cli_map_merge_help },
+    { "map-plot", cli_map_plot, cli_map_plot_synopsis, cli_map_plot_help },
+    { "fields", cli_fields, cli_fields_synopsis, cli_fields_help },
+};
+#define COMMANDS (sizeof commands / sizeof commands[0])
+
+static int is_help(const char *argument)
 {
-    va_list args;
-    fputs("beamslider: error: ", stderr);
-    va_start(args, format);
-    vfprintf(stderr, format, args);
-    va_end(args);
-    fputc('\n', stderr);
+    return !strcmp(argument, "--help") || !strcmp(argument, "-h");
+}
+
+/* `beamslider --help`: every command's synopsis, so every option, and the
+ * first line of what it does. */
+static void print_usage(FILE *out)
+{
+    size_t i;
+    fputs("usage: beamslider COMMAND ...   (beamslider COMMAND --help: the command's help)\n", out);
+    for (i = 0; i < COMMANDS; ++i) {
+        const char *help = commands[i].help;
+        fprintf(out, "  %s\n  %.*s\n", commands[i].synopsis, (int)strcspn(help, "\n"), help);
+    }
+    fputs("  beamslider --version\n    version, source revision and precision\n"
+          "  beamslider --help\n    this text\n", out);
+    fputs("core precision: " BS_REAL_NAME "\n", out);
 }
 
 /* Standard output carries what a command produces (the JSON summary, the
@@ -60,38 +65,27 @@ static int finish(int status)
 
 int main(int argc, char **argv)
 {
-    if (argc >= 2 && !strcmp(argv[1], "modes"))
-        return finish(cli_modes(argc - 2, argv + 2));
-    if (argc >= 2 && !strcmp(argv[1], "run"))
-        return finish(cli_run(argc - 2, argv + 2));
-    if (argc >= 2 && !strcmp(argv[1], "gen"))
-        return finish(cli_gen(argc - 2, argv + 2));
-    if (argc >= 2 && !strcmp(argv[1], "sweep"))
-        return finish(cli_sweep(argc - 2, argv + 2));
-    if (argc >= 2 && !strcmp(argv[1], "twin"))
-        return finish(cli_twin(argc - 2, argv + 2));
-    if (argc >= 2 && !strcmp(argv[1], "twin-plant"))
-        return finish(cli_twin_plant_command(argc - 2, argv + 2));
-    if (argc >= 2 && !strcmp(argv[1], "twin-gains"))
-        return finish(cli_twin_gains_command(argc - 2, argv + 2));
-    if (argc >= 2 && !strcmp(argv[1], "map"))
-        return finish(cli_map(argc - 2, argv + 2));
-    if (argc >= 2 && !strcmp(argv[1], "map-merge"))
-        return finish(cli_map_merge(argc - 2, argv + 2));
-    if (argc >= 2 && !strcmp(argv[1], "map-plot"))
-        return finish(cli_map_plot(argc - 2, argv + 2));
-    if (argc >= 2 && !strcmp(argv[1], "fields"))
-        return finish(cli_fields(argc - 2, argv + 2));
-    if (argc == 2 && !strcmp(argv[1], "--version")) {
-        printf("beamslider %s (revision %s), core precision %s\n", bs_version(), BS_REVISION, BS_REAL_NAME);
-        return finish(CLI_OK);
-    }
-    if (argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
-        fputs(usage, stdout);
-        return finish(CLI_OK);
-    }
-    if (argc >= 2)
+    size_t i;
+
+    if (argc >= 2) {
+        for (i = 0; i < COMMANDS; ++i)
+            if (!strcmp(argv[1], commands[i].name)) {
+                if (argc >= 3 && is_help(argv[2])) {
+                    printf("usage: %s\n%s", commands[i].synopsis, commands[i].help);
+                    return finish(CLI_OK);
+                }
+                return finish(commands[i].run(argc - 2, argv + 2));
+            }
+        if (argc == 2 && !strcmp(argv[1], "--version")) {
+            printf("beamslider %s (revision %s), core precision %s\n", bs_version(), BS_REVISION, BS_REAL_NAME);
+            return finish(CLI_OK);
+        }
+        if (is_help(argv[1])) {
+            print_usage(stdout);
+            return finish(CLI_OK);
+        }
         cli_error("unknown command '%s'", argv[1]);
-    fputs(usage, stderr);
+    }
+    print_usage(stderr);
     return CLI_USAGE;
 }

@@ -14,29 +14,31 @@
 #       ensembles); "within" when the whole interval lies within +-TOLERANCE (2 %);
 #   unconverged contact steps per run (the JSON summary): the mean, this tree's no
 #       larger than the baseline's.
+# BASELINE "this": this tree's own build as the baseline, so that THIS_ARGS (run
+# options of this tree's runs, e.g. "--set numerics.dt=4e-5 --set numerics.prewarp=on")
+# is compared with the scene as it is (docs/baseline_prewarp.md).
 set -eu
-BASELINE=${1:?usage: baseline_check.sh COMMIT}
+BASELINE=${1:?usage: baseline_check.sh COMMIT|this}
+THIS_ARGS=${THIS_ARGS:-}
+export THIS_ARGS
 OUT=${OUT:-docs/baseline.md}
 ENSEMBLE=${ENSEMBLE:-512}
 TOLERANCE=${TOLERANCE:-2}
 JOBS=${JOBS:-$(nproc)}
-SRC=build/baseline/src
 TMP=$(mktemp -d)
 export TMP
 trap 'rm -rf "$TMP"' EXIT
 . host/reports/speeds.sh
 
-# the baseline's tree and binaries (reused while it is the same commit)
-commit=$(git rev-parse --verify "$BASELINE^{commit}")
-if [ ! -d "$SRC" ] || [ "$(git -C "$SRC" rev-parse HEAD 2>/dev/null)" != "$commit" ]; then
-    git worktree remove --force "$SRC" 2>/dev/null || rm -rf "$SRC"
-    git worktree prune
-    mkdir -p build/baseline
-    git worktree add --detach "$SRC" "$commit" >&2
+# the baseline's tree and binaries (build/baseline/src, reused while it is the same commit)
+if [ "$BASELINE" = this ]; then
+    commit=$(git rev-parse HEAD)
+    base_bin=.
+else
+    . host/reports/baseline_tree.sh
+    commit=$(baseline_tree "$BASELINE")
+    base_bin=build/baseline/src
 fi
-for real in double float; do
-    make -C "$SRC" --no-print-directory -s REAL=$real build/$real/beamslider >&2
-done
 
 # ENSEMBLE starts x {this, baseline} x {double, float}, JOBS at a time
 : > "$TMP/jobs"
@@ -44,15 +46,16 @@ k=0
 while [ "$k" -lt "$ENSEMBLE" ]; do
     s0=$(awk -v k="$k" 'BEGIN { printf "%.5f", 0.3 + 1e-5 * k }')
     for real in double float; do
-        echo "this-$real build/$real/beamslider $s0" >> "$TMP/jobs"
-        echo "baseline-$real $SRC/build/$real/beamslider $s0" >> "$TMP/jobs"
+        echo "this-$real build/$real/beamslider $s0 this" >> "$TMP/jobs"
+        echo "baseline-$real $base_bin/build/$real/beamslider $s0 baseline" >> "$TMP/jobs"
     done
     k=$((k + 1))
 done
 echo "baseline_check: $ENSEMBLE runs of 60 s per build and precision, $JOBS at a time" >&2
-xargs -P "$JOBS" -L 1 sh -c 'name=$1; bin=$2; s0=$3
-    "$bin" run configs/fig6.ini --t-end 60 --s0 "$s0" --periods "$TMP/$name-$s0.csv" > "$TMP/$name-$s0.json"' sh \
-    < "$TMP/jobs"
+xargs -P "$JOBS" -L 1 sh -c 'name=$1; bin=$2; s0=$3; side=$4
+    # shellcheck disable=SC2086
+    "$bin" run configs/fig6.ini --t-end 60 --s0 "$s0" --periods "$TMP/$name-$s0.csv" $([ "$side" = this ] && echo $THIS_ARGS) \
+        > "$TMP/$name-$s0.json"' sh < "$TMP/jobs"
 
 # per build: "low high amp unconverged" per run, then means and standard errors
 for name in this-double baseline-double this-float baseline-float; do
@@ -97,9 +100,9 @@ verdict=$([ $status -eq 0 ] && echo "Every mean is within +-$TOLERANCE % of the 
 cat > "$OUT" <<DOC
 # Slow dynamics against a baseline
 
-Produced by \`make baseline-check BASELINE=$BASELINE$( [ "$OUT" = docs/baseline.md ] || printf " OUT=%s" "$OUT")\` (host/reports/baseline_check.sh) on
-$(date -u +%Y-%m-%d), $ENSEMBLE runs per build and precision: this tree's build ($(build/double/beamslider --version | sed 's/, core precision.*//'))
-against commit $(git rev-parse --short "$commit") ($(git log -1 --format=%s "$commit" | cut -c1-60)...).
+Produced by \`make baseline-check BASELINE=$BASELINE$( [ "$OUT" = docs/baseline.md ] || printf " OUT=%s" "$OUT")$( [ -z "$THIS_ARGS" ] || printf " THIS_ARGS='%s'" "$THIS_ARGS")$( [ "$TOLERANCE" = 2 ] || printf " TOLERANCE=%s" "$TOLERANCE")\` (host/reports/baseline_check.sh) on
+$(date -u +%Y-%m-%d), $ENSEMBLE runs per build and precision: this tree's build ($(build/double/beamslider --version | sed 's/, core precision.*//'))$( [ -z "$THIS_ARGS" ] || printf ", run with \`%s\`," "$THIS_ARGS")
+against $( [ "$BASELINE" = this ] && echo "the same build running the scene as it is" || echo "commit $(git rev-parse --short "$commit") ($(git log -1 --format=%s "$commit" | cut -c1-60)...)").
 
 A change to the contact solve or the detection moves every trajectory (the state hashes
 of tests/test_golden.c), and the contact dynamics are chaotic, so what a change must

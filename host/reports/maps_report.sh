@@ -23,6 +23,9 @@ DOC=${DOC:-docs/maps.md}
 # point; fig12b starts at s0 = 0.4, the map at 0.3 like the others)
 MARKS=${MARKS:-"124,14,fig6 104,14,fig7 126,10,fig8 124,6,fig9 106,10,fig12a/b"}
 LABELS="fig6:signature fig7:trivial fig8:relaxation fig9:self_damping fig12a:trivial"
+# the outcome classes in their table order (host/lib/map/outcome_classes.h, the one table)
+CLASSES=$(sed -n 's/^ *X([A-Z_]*, *\([a-z_]*\),.*/\1/p' host/lib/map/outcome_classes.h | tr '\n' ' ')
+[ -n "$CLASSES" ] || { echo "maps: no outcome classes in host/lib/map/outcome_classes.h" >&2; exit 1; }
 
 if ! grep -q '<!-- maps-numbers -->' "$DOC" || ! grep -q '<!-- /maps-numbers -->' "$DOC"; then
     echo "maps: $DOC has no <!-- maps-numbers --> ... <!-- /maps-numbers --> pair" >&2
@@ -38,7 +41,7 @@ $command >"$DIR-run-$(date +%Y%m%d-%H%M%S).json"
 set --
 for mark in $MARKS; do set -- "$@" --mark "$mark"; done
 "$BIN" map-plot "$DIR" --out "$DIR-plot" --title "validated set (fig6.ini), 120 s from s0 = 0.3" "$@"
-for figure in outcome agreement s_final s_spread amp_h; do
+for figure in outcome agreement s_settled s_spread amp_h; do
     cp "$DIR-plot_$figure.png" "$FIG/map_$figure.png"
 done
 
@@ -64,12 +67,12 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
     echo "Grid points by the class most of their 3 starts ended in, and how many of the points"
     echo "had starts in more than one class:"
     echo
-    awk -F, 'NR == 1 { next }
+    awk -F, -v classes="$CLASSES" 'NR == 1 { next }
         { n[$5]++; total++; if ($6 + 0 < 1) split_points++ }
         END {
             printf "| class | grid points | share |\n|---|---|---|\n"
-            split("trivial signature relaxation self_damping stop fault other", order, " ")
-            for (i = 1; i <= 7; i++) printf "| %s | %d | %.0f %% |\n", order[i], n[order[i]], 100 * n[order[i]] / total
+            count = split(classes, order, " ")
+            for (i = 1; i <= count; i++) printf "| %s | %d | %.0f %% |\n", order[i], n[order[i]], 100 * n[order[i]] / total
             printf "| (points whose starts disagree) | %d | %.0f %% |\n", split_points, 100 * split_points / total
         }' "$DIR/map.csv"
     echo
@@ -95,16 +98,19 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
     echo "The papers' scenarios on the map (the point's 3 starts). fig12b, fig12a's excitation from s0 = 0.4,"
     echo "is not on it: the map starts every run at 0.3 (tests/check_map.sh classifies fig12b from its own start)."
     echo
-    echo "| scenario | f_ex [Hz] | a [m/s^2] | paper | map: class (agreement) | fractions trivial/signature/relaxation/self-damping/stop/fault/other | s_final mean (sd) | amp_h mean [h] |"
+    echo "| scenario | f_ex [Hz] | a [m/s^2] | paper | map: class (agreement) | fractions $(echo $CLASSES | tr ' ' '/') | s_settled mean (sd) | amp_h mean [h] |"
     echo "|---|---|---|---|---|---|---|---|"
     for pair in $LABELS; do
         scene=${pair%%:*}
         f=$(sed -n 's/^frequency *= *\([0-9.]*\).*/\1/p' "configs/$scene.ini")
         a=$(sed -n 's/^acceleration *= *\([0-9.]*\).*/\1/p' "configs/$scene.ini")
-        awk -F, -v f="$f" -v a="$a" -v scene="$scene" -v want="${pair#*:}" '
+        awk -F, -v f="$f" -v a="$a" -v scene="$scene" -v want="${pair#*:}" -v classes="$CLASSES" '
+            NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; count = split(classes, order, " "); next }
             $2 == f && $3 == a {
-                printf "| %s | %s | %s | %s | %s (%s) | %s/%s/%s/%s/%s/%s/%s | %s (%s) | %s |\n", scene, f, a, want,
-                    $5, $6, $7, $8, $9, $10, $11, $12, $13, $14, $15, $18
+                fractions = ""
+                for (i = 1; i <= count; i++) fractions = fractions (i > 1 ? "/" : "") $c["frac_" order[i]]
+                printf "| %s | %s | %s | %s | %s (%s) | %s | %s (%s) | %s |\n", scene, f, a, want,
+                    $c["outcome"], $c["agreement"], fractions, $c["s_settled_mean"], $c["s_settled_sd"], $c["amp_h_mean"]
             }' "$DIR/map.csv"
     done
 } >"$DIR-numbers.md"

@@ -4,14 +4,17 @@
 #   make fig6-report    the signature move in numbers -> docs/validation.md section 5
 #   make accuracy       error against run time vs the reference -> docs/accuracy.md
 #   make stability      the stiff and extreme cases -> docs/stability.md
-#   make bench          steps per second -> docs/performance.md
+#   make bench [BENCH_BASELINE=COMMIT]
+#                       steps per CPU second, paired runs of this tree and the commit
+#                       (0.7.0's by default) -> docs/performance.md
 #   make twin-report    the twin in closed loop against the independent reference as
 #                       plant (perturbed, noisy signals) -> docs/twin.md, "Closed loop"
 #   make harvester-report  harvested power over a load sweep, self-tuning under
 #                       electrical damping, a moving ambient frequency -> docs/harvester.md
-#   make baseline-check [BASELINE=COMMIT]
-#                       the slow dynamics of fig6 over ensembles, this tree against
-#                       COMMIT (default: 0.5.0, before the contact-solve redesign)
+#   make baseline-check [BASELINE=COMMIT|this] [THIS_ARGS='run options'] [OUT=docs/x.md] [TOLERANCE=2]
+#                       the slow dynamics of fig6 over 512-run ensembles, this tree
+#                       (with THIS_ARGS) against the commit (0.7.0's by default) or,
+#                       BASELINE=this, against itself without THIS_ARGS
 #                       -> docs/baseline.md
 #   make maps           the operating map over f_ex x a (1,530 runs of 120 s, 3 starts per
 #                       point; about 30-50 min on 2 cores; resumable) -> docs/maps.md and
@@ -47,7 +50,7 @@ stability:
 bench:
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
 	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
-	sh host/reports/bench.sh
+	$(if $(BENCH_BASELINE),BENCH_BASELINE=$(BENCH_BASELINE)) sh host/reports/bench.sh
 
 harvester-report: deps-figures
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
@@ -58,11 +61,12 @@ twin-report: deps-figures $(BUILD)/bs-reference
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
 	sh host/reports/twin_report.sh
 
-BASELINE ?= b0fa6bb
+BASELINE ?= 2326ca8
 baseline-check:
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
 	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
-	sh host/reports/baseline_check.sh $(BASELINE)
+	$(if $(OUT),OUT=$(OUT)) $(if $(THIS_ARGS),THIS_ARGS='$(THIS_ARGS)') $(if $(TOLERANCE),TOLERANCE=$(TOLERANCE)) \
+	    sh host/reports/baseline_check.sh $(BASELINE)
 
 figures: deps-figures
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider

@@ -26,6 +26,10 @@
 #               without a cycle model, instructions), B = f x dt; largest W as ceil(W / B)
 #               samples, and the first sample at which it exceeds TWIN_FIFO_SAMPLES (the
 #               firmware's FIFO: from there on the overrun policy drops samples)
+#   observer    the M4F fig6 flash image profiled (count.sh with CM_PROFILE, then
+#               tests/qemu/classes.sh): estimated cycles per sample of the observer's own
+#               code (core/src/bs_observer.c: bs_observer_*, what it inlines), of the twin's
+#               step and of the rest of the firmware, each by kind of instruction
 #   memory      from the image's map and symbols: code of the core and of the firmware,
 #               constants (the scene, the gains), RAM of each static object, the image's
 #               totals (arm-none-eabi-size; newlib's printf is most of the rest), and the
@@ -118,11 +122,17 @@ run_job() {
     j=$1 target=$(word "$1" 1) elf=$(word "$1" 4)
     echo "twin_firmware_report: $target $(word "$1" 2) $(word "$1" 3)" >&2
     if [ "$target" = cortex-m4f ]; then cycles=1 mhz=168; else cycles= mhz=480; fi
+    # the five-mode twin on the M4F with its constants in flash: profiled, so that the
+    # observer's share can be told from the step's (~1.5x the time)
+    profile=
+    [ "$target:$(word "$1" 2):$(word "$1" 3)" != cortex-m4f:fig6:flash ] || profile=profile=$TMP/job-$j.profile
     { status=0
-      CM_CYCLES=$cycles sh tests/qemu/count.sh "$elf" "$target" 3600 || status=$?
+      CM_CYCLES=$cycles CM_PROFILE=$profile sh tests/qemu/count.sh "$elf" "$target" 3600 || status=$?
       echo "$status" > "$TMP/job-$j.status"; } |
         awk -v clocks="$CLOCKS" -v dt=$DT -v entry=$ENTRY -v fifo="$FIFO" -v cycles="${cycles:-0}" -v mhz=$mhz \
             -v logfile="$TMP/job-$j.log" "$SUMMARY_AWK" > "$TMP/job-$j.sum" || :
+    [ -z "$profile" ] || [ "$(cat "$TMP/job-$j.status")" != 0 ] ||
+        sh tests/qemu/classes.sh "$TMP/job-$j.profile" "$elf" > "$TMP/job-$j.classes"
 }
 # two lanes, the M7 (no cycle estimate: faster) with the shorter one
 j=1
@@ -184,11 +194,56 @@ while [ "$j" -le "$n" ]; do
     fi
     j=$((j + 1))
 done
+# The observer's share (the profiled image): per sample, by part of the firmware and kind
+# of instruction -> rows "| part | cycles | FP ops | FP cycles | load | store | control | other | insn |"
+share_rows() {
+    awk -v samples="$2" '
+        function part_of(f) {
+            if (f ~ /^bs_observer_/ || f ~ /^(observe|correct_position|estimate_position|move_slider|demodulate|transfer|complex_div|angle_of|invert_map|matching_map|gains_at|correction_of|commit_correction|beyond_gate|twin_signal|twin_power|mean|add_compensated)([.].*)?$/) return 1
+            if (f ~ /^(step|bs_sim_step|bs_sim_step_measured)$/ || f ~ /^bs_(excitation|beam|piezo|contact|pgs|shape)_/ ||
+                f ~ /^(active_set_solve|residual_of|residual|pointed_mode|breach_size|next_modes?|solve_[a-z_]+)([.].*)?$/) return 2
+            return 3
+        }
+        { k = part_of($1); for (c = 2; c <= 13; ++c) { v[k, c] += $c; v[0, c] += $c } }
+        END {
+            split("the observer'"'"'s correction (core/src/bs_observer.c)|the twin'"'"'s step|the rest of the firmware (producer, FIFO, report)", name, "|")
+            for (k = 1; k <= 3; ++k)
+                printf "| %s | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f |\n", name[k], v[k, 8] / samples,
+                    v[k, 3] / samples, v[k, 9] / samples, v[k, 10] / samples, v[k, 11] / samples, v[k, 12] / samples,
+                    v[k, 13] / samples, v[k, 2] / samples
+            printf "| **all** | **%.0f** | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f |\n", v[0, 8] / samples,
+                v[0, 3] / samples, v[0, 9] / samples, v[0, 10] / samples, v[0, 11] / samples, v[0, 12] / samples,
+                v[0, 13] / samples, v[0, 2] / samples
+        }' "$1"
+}
 clock_head="| scene | variant |" clock_rule="|---|---|"
 for c in $CLOCKS; do clock_head="$clock_head $c MHz ($((c * 20)) cycles) |"; clock_rule="$clock_rule---|"; done
 
 fig6=$TMP/job-$(job cortex-m4f fig6 flash).sum
+fig6ram=$TMP/job-$(job cortex-m4f fig6 ram).sum
 one=$TMP/job-$(job cortex-m4f fig6_1mode ram).sum
+# share_of PART -> the part's cycles per sample (share_rows' second column)
+share_of() {
+    share_rows "$TMP/job-$(job cortex-m4f fig6 flash).classes" "$(val "$fig6" samples)" |
+        awk -F'|' -v k="$1" 'NR == k { gsub(/ /, "", $3); print $3 }'
+}
+# target_row TEXT LIMIT FLASH RAM -> a row, met if either value is within the limit
+target_row() {
+    awk -v text="$1" -v limit="$2" -v flash="$3" -v ram="$4" 'BEGIN {
+        met = (flash != "-" && flash + 0 <= limit + 0) || (ram != "-" && ram + 0 <= limit + 0)
+        printf "| %s | ≤ %s | %s | %s | %s |\n", text, limit, flash, ram, met ? "yes" : "**no**" }'
+}
+target_rows="$(target_row "fig6 twin with the observer: mean estimated cycles per sample (whole stream)" 2700 \
+                  "$(val "$fig6" sample)" "$(val "$fig6ram" sample)")
+$(target_row "fig6 twin: largest backlog over the whole stream, samples" "$FIFO (the FIFO)" \
+                  "$(val "$fig6" backlog_168)" "$(val "$fig6ram" backlog_168)")"
+if [ "$(val "$fig6" backlog_168)" -le "$FIFO" ] || [ "$(val "$fig6ram" backlog_168)" -le "$FIFO" ]; then
+    verdict="It keeps pace on the 168 MHz M4F."
+    fifo_text="within the FIFO of $FIFO samples: no sample is dropped."
+else
+    verdict="Not in real time on the 168 MHz M4F."
+    fifo_text="beyond the FIFO of $FIFO samples (full at $(awk -v k="$(val "$fig6" overflow)" -v dt=$DT 'BEGIN { printf "%.3f s", k * dt }') in flash)."
+fi
 # the slowest listed clock at which a variant's largest backlog fits the FIFO
 fits() {
     for c in $CLOCKS; do
@@ -227,32 +282,44 @@ end in the same state as the flash ones, bit for bit, which the script checks).
 | twin scene | target | constants | samples | twin step: mean insn | worst insn | mean cycles: optimistic | worst: optimistic | mean cycles: pessimistic | worst: pessimistic | producer: mean insn | producer: mean cycles (pess.) | per sample: mean insn | per sample: mean cycles (pess.) | budget | samples over budget | largest backlog [samples] | FIFO of $FIFO full at | s at 60 s |
 |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|
 $cost_rows
-**Not in real time on the 168 MHz M4F.** The twin step alone takes $(val "$fig6" step_pess) estimated
-cycles per sample on average (pessimistic; $(val "$fig6" step_opt) optimistic) where a sample period
-has 3360: the plain fig6 step (its whole-run mean is in "Whole runs" above) plus the observer's
-correction, on a twin that follows the plant. The FIFO fills within
-$(awk -v k="$(val "$fig6" overflow)" -v dt=$DT 'BEGIN { printf "%.0f ms", k * dt * 1e3 }') of the stream and the backlog then grows for
-the whole run (largest: $(val "$fig6" backlog_168) samples, $(val "$fig6" backlog_time_168)). From
-there on the firmware's overrun policy holds: samples dropped and counted, the twin stepped
-through each gap without measurement, its time the plant's but falling ever further behind
-(port/cortex-m/twin/README.md, "Overrun policy"; \`make test\` runs it at a stated
-$(sed -n 's/^TWIN_OVERLOAD_CYCLES := //p' tests/embedded/twin.mk) cycles per step). What would keep pace, measured: the largest backlog
-over the whole stream against the clock of an M4-class core (the same cycle estimate; clock x dt
-cycles per sample; a backlog over $FIFO samples overflows this firmware's FIFO):
+**Targets** (issue 27; Cortex-M4F at 168 MHz, pessimistic estimate, the five-mode twin on the
+fig6 stream; met when the flash or the ram variant meets it):
+
+| target | limit | flash | ram | met |
+|---|---|---|---|---|
+$target_rows
+
+**$verdict** The twin step takes $(val "$fig6" step_pess) estimated cycles per sample on average
+(pessimistic, constants in flash; $(val "$fig6" step_opt) optimistic) where a sample period has 3360:
+the fig6 step (its whole-run mean is in "Whole runs" above) plus the observer's correction, on a
+twin that follows the plant. The whole firmware takes $(val "$fig6" sample) per sample (flash) and $(val "$fig6ram" sample)
+(ram); the largest backlog over the whole stream is $(val "$fig6" backlog_168) samples ($(val "$fig6" backlog_time_168)) in flash and
+$(val "$fig6ram" backlog_168) ($(val "$fig6ram" backlog_time_168)) in RAM, $fifo_text Where the
+overrun policy would take over (samples dropped and counted, the twin stepped through each gap
+without measurement: port/cortex-m/twin/README.md, "Overrun policy"; \`make test\` runs it at a
+stated $(sed -n 's/^TWIN_OVERLOAD_CYCLES := //p' tests/embedded/twin.mk) cycles per step), the table below gives the clock that keeps the backlog within the FIFO:
+the largest backlog over the whole stream against the clock of an M4-class core (the same cycle
+estimate; clock x dt cycles per sample):
 
 $clock_head
 $clock_rule
 $backlog_rows
-The backlog fits the FIFO from $(fits "$fig6") with the five-mode twin (constants in flash)
-and from $(fits "$one") with the one-mode twin and its constants in RAM. The mean
-alone needs $(awk -v c="$(val "$fig6" sample)" -v dt=$DT 'BEGIN { printf "%.0f", c / dt / 1e6 }') MHz (fig6, flash) and $(awk -v c="$(val "$one" sample)" -v dt=$DT 'BEGIN { printf "%.0f", c / dt / 1e6 }') MHz
-(fig6_1mode, RAM); the bursts (contact steps of the active-set solve, above) add the rest. So: a
-faster part (a 480 MHz Cortex-M7 runs the fig6 twin in $(val "$TMP/job-$(job cortex-m7 fig6 flash).sum" sample) instructions per sample against
-9600 cycles), or the one-mode scene with its constants in RAM on an M4 near the clock the
-table gives, or a larger dt (docs/porting.md, "Time step and the clock budget"). The one-mode
-twin is another model, not only a cheaper one: on the five-mode plant its s ends
+The backlog fits the FIFO from $(fits "$fig6") with the five-mode twin (constants in flash),
+$(fits "$fig6ram") with its constants in RAM, and from $(fits "$one") with the one-mode twin in RAM.
+The one-mode twin is another model, not only a cheaper one: on the five-mode plant its s ends
 $(awk -v a="$(val "$one" s)" -v b="$s_plant" 'BEGIN { d = a - b; printf "%.3f", d < 0 ? -d : d }') from the plant's, the five-mode twin's
-$(awk -v a="$(val "$fig6" s)" -v b="$s_plant" 'BEGIN { d = a - b; printf "%.4f", d < 0 ? -d : d }').
+$(awk -v a="$(val "$fig6" s)" -v b="$s_plant" 'BEGIN { d = a - b; printf "%.4f", d < 0 ? -d : d }'). A 480 MHz Cortex-M7 runs the
+fig6 twin in $(val "$TMP/job-$(job cortex-m7 fig6 flash).sum" sample) instructions per sample against 9600 cycles.
+
+**Where a sample's cycles go** (the five-mode twin, constants in flash, profiled over the whole
+stream; tests/qemu/classes.sh): estimated cycles per sample (pessimistic), the floating-point
+arithmetic executed and its cycles, and the rest by kind of instruction, as in "Where the cycles
+go" above. The observer's correction is $(share_of 1) cycles per sample, the twin's step
+$(share_of 2).
+
+| part | cycles/sample | FP operations/sample | FP cycles | load cycles | store cycles | control cycles | other cycles | instructions/sample |
+|---|---|---|---|---|---|---|---|---|
+$(share_rows "$TMP/job-$(job cortex-m4f fig6 flash).classes" "$(val "$fig6" samples)")
 
 **Memory** (bytes). Code: .text of the core and of the firmware's files (port/cortex-m/twin);
 constants: the scene and the gains in flash; RAM: the twin (\`bs_sim\`), the observer (three

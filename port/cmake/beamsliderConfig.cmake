@@ -2,14 +2,19 @@
 # by `make install` (installed as PREFIX/lib/cmake/beamslider/; this file is
 # port/cmake/beamsliderConfig.cmake).
 #
-#   find_package(beamslider 0.5 REQUIRED)              # or COMPONENTS double float
-#   target_link_libraries(app PRIVATE beamslider::double)
+#   find_package(beamslider 0.8 REQUIRED)              # or COMPONENTS double float host-double host-float
+#   target_link_libraries(app PRIVATE beamslider::host-double)
 #
-# Imported targets, one per precision (bs_real), both static libraries of the
-# core with run-time scenes: beamslider::double and beamslider::float. Each
-# brings its own include folder (PREFIX/include/beamslider-P: beamslider.h and
-# the bs_build_config.h it was built with) and the math library. A program
-# links one of them; compiled against the other's headers it gets BS_E_BUILD.
+# Imported targets, two per precision (bs_real): beamslider::double and
+# beamslider::float, the core with run-time scenes (static libraries, with
+# the math library); beamslider::host-double and beamslider::host-float,
+# libbeamslider-host (beamslider_host.h: scenes from INI files at run time,
+# runs, sweeps, maps, the twin), a shared library that holds the core too.
+# Each brings its own include folder (PREFIX/include/beamslider-P:
+# beamslider.h, beamslider_host.h and the bs_build_config.h it was built
+# with). A program links one of them; compiled against the other's headers
+# it gets BS_E_BUILD. The version check (beamsliderConfigVersion.cmake)
+# takes any request of this MAJOR.MINOR up to this patch.
 #
 # The installation is found relative to this file, so it can be moved as a
 # whole. For the core built inside your project (an MCU, a compiled scene)
@@ -18,11 +23,12 @@
 get_filename_component(_beamslider_prefix "${CMAKE_CURRENT_LIST_DIR}/../../.." ABSOLUTE)
 
 set(_beamslider_reals double float)
+set(_beamslider_components double float host-double host-float)
 foreach(_beamslider_component IN LISTS beamslider_FIND_COMPONENTS)
-    if(NOT _beamslider_component IN_LIST _beamslider_reals)
+    if(NOT _beamslider_component IN_LIST _beamslider_components)
         set(beamslider_FOUND FALSE)
         set(beamslider_NOT_FOUND_MESSAGE
-            "beamslider: unknown component '${_beamslider_component}' (the components are double and float)")
+            "beamslider: unknown component '${_beamslider_component}' (the components are double, float, host-double and host-float)")
         return()
     endif()
 endforeach()
@@ -45,8 +51,27 @@ foreach(_beamslider_real IN LISTS _beamslider_reals)
             INTERFACE_LINK_LIBRARIES m)
     endif()
     set(beamslider_${_beamslider_real}_FOUND TRUE)
+
+    set(_beamslider_host "${_beamslider_prefix}/lib/libbeamslider-host-${_beamslider_real}.so")
+    if(NOT EXISTS "${_beamslider_host}" OR NOT EXISTS "${_beamslider_include}/beamslider_host.h")
+        set(beamslider_FOUND FALSE)
+        set(beamslider_NOT_FOUND_MESSAGE
+            "beamslider: ${_beamslider_host} or ${_beamslider_include}/beamslider_host.h is missing (reinstall with make install)")
+        return()
+    endif()
+    if(NOT TARGET beamslider::host-${_beamslider_real})
+        get_filename_component(_beamslider_host_real "${_beamslider_host}" REALPATH)
+        add_library(beamslider::host-${_beamslider_real} SHARED IMPORTED)
+        set_target_properties(beamslider::host-${_beamslider_real} PROPERTIES
+            IMPORTED_LOCATION "${_beamslider_host_real}"
+            INTERFACE_INCLUDE_DIRECTORIES "${_beamslider_include}")
+    endif()
+    set(beamslider_host-${_beamslider_real}_FOUND TRUE)
 endforeach()
 
+unset(_beamslider_host)
+unset(_beamslider_host_real)
+unset(_beamslider_components)
 unset(_beamslider_lib)
 unset(_beamslider_include)
 unset(_beamslider_real)

@@ -6,7 +6,11 @@
 #                        programs of tests/consumer/ built against it with
 #                        pkg-config (C and C++), with CMake (add_subdirectory
 #                        of port/cmake, find_package), a float/double mismatch
-#                        refused with BS_E_BUILD, and the cross-compiled library
+#                        refused with BS_E_BUILD, README.md's library program
+#                        from the installed tree alone (C, C++, pkg-config,
+#                        find_package: the hash of the installed beamslider run),
+#                        the find_package versions the documents ask for, and
+#                        the cross-compiled library
 #                        of `make lib` for a Cortex-M4F when its compiler is there
 CONSUMER_STAGE := $(abspath $(BUILD))/stage
 # the core compiled for fig6_1mode in float by make (the C++ test's, Makefile)

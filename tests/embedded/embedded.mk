@@ -5,6 +5,8 @@
 #   make embedded-test     every image of EMB_CHECKS under QEMU against its host
 #                          twin, bit for bit (part of `make test`), the QEMU
 #                          harness self-test and the core symbol check of each image
+#                          (embedded-more: the same for EMB_MORE_CHECKS, and
+#                          embedded-long the whole runs, in `make test-long`)
 #   make embedded-report   flash, RAM, stack, instructions and estimated cycles
 #                          per step, backlog of whole runs -> docs/embedded.md
 #                          (and make twin-firmware-report: the twin firmware, tests/embedded/twin.mk)
@@ -36,12 +38,15 @@ $$(CM_OBJS_$2_$1): $(call emb_config_h,$3,$4,$6)
 endef
 emb_image = $(eval $(call emb__image,$(strip $1),$(strip $2),$(strip $3),$(strip $4),$(strip $5),$(strip $6),$7))
 EMB_SRC := tests/embedded/scene_run.c $(CORE_SRC)
-# TARGET:SCENE:REAL:STEPS run in `make test` (soft-float targets: fewer steps)
-# (fig6_frictionless: the core compiled without friction, a switch no other image turns off)
+# TARGET:SCENE:REAL:STEPS run in `make test` (soft-float targets: fewer steps): the
+# twin's board in both scenes and a core without FPU ...
 EMB_CHECKS := cortex-m4f:fig6:float:20000 cortex-m4f:fig6_1mode:float:20000 \
-              cortex-m4f:fig6_frictionless:float:20000 \
-              cortex-m7:fig6:double:20000 cortex-m7:fig6_1mode:float:20000 \
-              cortex-m3:fig6_1mode:float:2000 cortex-m0plus:fig6_1mode:float:2000
+              cortex-m0plus:fig6_1mode:float:2000
+# ... and in `make test-long` the other boards and switches (fig6_frictionless: the
+# core compiled without friction, a switch no other image turns off)
+EMB_MORE_CHECKS := cortex-m4f:fig6_frictionless:float:20000 \
+                   cortex-m7:fig6:double:20000 cortex-m7:fig6_1mode:float:20000 \
+                   cortex-m3:fig6_1mode:float:2000
 # ... and in `make test-long`, the scenes' whole runs (t_end / dt steps)
 EMB_LONG_CHECKS := cortex-m4f:fig6_1mode:float:BS_SCENE_STEPS cortex-m4f:fig6:float:BS_SCENE_STEPS
 # TARGET:REAL per scene for `make embedded-report`
@@ -70,7 +75,7 @@ emb_steps = $(if $(filter cortex-m3 cortex-m0plus,$1),2000,20000)
 emb_whole_flags := -DBS_RUN_COST=1 -DBS_RUN_TIGHT_STEPS=0
 
 emb_word = $(word $2,$(subst :, ,$1))
-$(foreach c,$(EMB_CHECKS),$(call emb_image,check-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1),\
+$(foreach c,$(EMB_CHECKS) $(EMB_MORE_CHECKS),$(call emb_image,check-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1),\
     $(call emb_word,$c,2),$(call emb_word,$c,3),$(call emb_word,$c,4),subspace,))
 $(foreach c,$(EMB_LONG_CHECKS),$(call emb_image,long-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1),\
     $(call emb_word,$c,2),$(call emb_word,$c,3),$(call emb_word,$c,4),subspace,-DBS_RUN_EVERY=100000))
@@ -106,12 +111,47 @@ $(EMB_HOST)/$1.$2.$3: tests/embedded/scene_run.c tests/embedded/bs_board_host.c 
 	    -Iport/cortex-m -I. -DBS_RUN_STEPS=$3 $4 -o $$@ tests/embedded/scene_run.c tests/embedded/bs_board_host.c \
 	    $(CORE_SRC) -lm
 endef
-EMB_HOST_TWINS := $(sort $(foreach c,$(EMB_CHECKS),$(call emb_word,$c,2):$(call emb_word,$c,3):$(call emb_word,$c,4)))
+EMB_HOST_TWINS := $(sort $(foreach c,$(EMB_CHECKS) $(EMB_MORE_CHECKS),$(call emb_word,$c,2):$(call emb_word,$c,3):$(call emb_word,$c,4)))
 $(foreach c,$(EMB_LONG_CHECKS),$(eval $(call emb__host,$(call emb_word,$c,2),$(call emb_word,$c,3),$(call emb_word,$c,4),-DBS_RUN_EVERY=100000)))
 $(foreach c,$(EMB_HOST_TWINS),$(eval $(call emb__host,$(call emb_word,$c,1),$(call emb_word,$c,2),$(call emb_word,$c,3))))
 
 EMB_LONG_PAIRS := $(foreach c,$(EMB_LONG_CHECKS),$(call emb_word,$c,1):$(call cm_elf,long-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1)):$(EMB_HOST)/$(call emb_word,$c,2).$(call emb_word,$c,3).$(call emb_word,$c,4))
-EMB_CHECK_PAIRS := $(foreach c,$(EMB_CHECKS),$(call emb_word,$c,1):$(call cm_elf,check-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1)):$(EMB_HOST)/$(call emb_word,$c,2).$(call emb_word,$c,3).$(call emb_word,$c,4))
+emb_check_pairs = $(foreach c,$1,$(call emb_word,$c,1):$(call cm_elf,check-$(call emb_word,$c,2)-$(call emb_word,$c,3),$(call emb_word,$c,1)):$(EMB_HOST)/$(call emb_word,$c,2).$(call emb_word,$c,3).$(call emb_word,$c,4))
+EMB_CHECK_PAIRS := $(call emb_check_pairs,$(EMB_CHECKS))
+EMB_MORE_PAIRS := $(call emb_check_pairs,$(EMB_MORE_CHECKS))
+
+# The step of a compiled scene against the run-time core's, bit for bit
+# (tests/embedded/step_diff.c, docs/design.md "Determinism"): step_diff.c
+# built against the core compiled for SCENE (as a firmware builds it, at -O3
+# as the host core is) and against this build's own core objects with the
+# scene header as data; their outputs must be equal. `make test` runs
+# STEP_DIFF_SCENES in each REAL (test-one), `make test-long` every scene with
+# a header in configs/ in both precisions (step-diff-long).
+STEP_DIFF_SCENES := fig6 fig6_1mode
+STEP_DIFF_DIR := $(BUILD)/stepdiff
+STEP_DIFF_ALL := $(basename $(notdir $(wildcard configs/*.h)))
+define step__diff
+$(STEP_DIFF_DIR)/$1.$2.compiled: tests/embedded/step_diff.c $(CORE_SRC) $(wildcard core/*/*.h) configs/$1.h \
+        $(call emb_config_h,$1,$2,subspace)
+	@mkdir -p $$(dir $$@)
+	$$(CC) -O3 $$(BASE_CFLAGS) -I$(EMB_CONFIG)/$1.$2.subspace -Icore/include -Icore/src -Iport/host -I. \
+	    -o $$@ tests/embedded/step_diff.c $(CORE_SRC) -lm
+$(STEP_DIFF_DIR)/$1.$2.runtime: tests/embedded/step_diff.c configs/$1.h $(BUILD)/$2/include/bs_build_config.h \
+        $(CORE_SRC:%.c=$(BUILD)/$2/%.o)
+	@mkdir -p $$(dir $$@)
+	$$(CC) -O2 $$(BASE_CFLAGS) -I$(BUILD)/$2/include -Icore/include -Iport/host -I. \
+	    -DDIFF_SCENE_HEADER='"configs/$1.h"' -o $$@ tests/embedded/step_diff.c $(CORE_SRC:%.c=$(BUILD)/$2/%.o) -lm
+endef
+$(foreach s,$(STEP_DIFF_ALL),$(foreach r,double float,$(eval $(call step__diff,$s,$r))))
+step_diff_pairs = $(foreach s,$1,$(STEP_DIFF_DIR)/$s.$2.compiled:$(STEP_DIFF_DIR)/$s.$2.runtime)
+.PHONY: step-diff-test step-diff-long
+# in this REAL (test-one)
+step-diff-test: $(foreach p,$(call step_diff_pairs,$(STEP_DIFF_SCENES),$(REAL)),$(subst :, ,$p))
+	@sh tests/embedded/check_step_diff.sh $(call step_diff_pairs,$(STEP_DIFF_SCENES),$(REAL))
+step-diff-long:
+	@set -e; for real in double float; do \
+	    $(MAKE) --no-print-directory REAL=$$real STEP_DIFF_SCENES='$(STEP_DIFF_ALL)' step-diff-test; done
+TEST_LONG += step-diff-long
 
 # The twin firmware (port/cortex-m/twin): twin-firmware-test, twin-firmware-report.
 include tests/embedded/twin.mk
@@ -122,6 +162,14 @@ embedded-test: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_CHECK_PAIRS),$(call emb_wor
 	$(if $(CM_TOOLS_OK),@CM_BUILD=$(CM_BUILD) sh tests/qemu/selftest.sh)
 	$(if $(CM_TOOLS_OK),@set -e; $(foreach c,$(EMB_CHECKS),NM=arm-none-eabi-nm sh tests/check_core_symbols.sh \
 	    $(call emb_word,$c,3) $(CM_BUILD)/$(call emb_word,$c,1)/check-$(call emb_word,$c,2)-$(call emb_word,$c,3).obj/core/src/*.o;))
+
+# The images of EMB_MORE_CHECKS against their host twins, and their core symbols
+# (`make test-long`).
+embedded-more: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_MORE_PAIRS),$(call emb_word,$p,2) $(call emb_word,$p,3)))
+	$(if $(CM_TOOLS_OK),@sh tests/check_embedded.sh $(EMB_MORE_PAIRS),@echo "$(CM_TOOLS_MSG)")
+	$(if $(CM_TOOLS_OK),@set -e; $(foreach c,$(EMB_MORE_CHECKS),NM=arm-none-eabi-nm sh tests/check_core_symbols.sh \
+	    $(call emb_word,$c,3) $(CM_BUILD)/$(call emb_word,$c,1)/check-$(call emb_word,$c,2)-$(call emb_word,$c,3).obj/core/src/*.o;))
+TEST_LONG += embedded-more
 
 # The whole runs of EMB_LONG_CHECKS against their host twins (`make test-long`).
 embedded-long: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_LONG_PAIRS),$(call emb_word,$p,2) $(call emb_word,$p,3)))
@@ -146,7 +194,7 @@ embedded-report:
 	$(MAKE) --no-print-directory -j2 embedded-report-images
 	CM_OPT='$(CM_OPT)' CM_BUILD='$(CM_BUILD)' sh host/reports/embedded_report.sh $(EMB_COST_SPECS)
 	$(MAKE) --no-print-directory twin-firmware-report
-.PHONY: embedded-report embedded-report-images
+.PHONY: embedded-report embedded-report-images embedded-test embedded-more
 
 
 ifneq ($(TARGET),host)

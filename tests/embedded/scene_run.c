@@ -5,9 +5,11 @@
  * Build against a build configuration naming the scene (BS_SCENE_CONFIG,
  * tests/embedded/embedded.mk) with -DBS_RUN_STEPS=N.
  *
- * Check mode (default): "scene: step N hash H s S" every BS_RUN_EVERY steps,
- * then "scene: end status 0 steps N hash H most-contacts C"; H is the state's
- * hash and S the bit pattern of s, so equal lines mean bit-identical states.
+ * Check mode (default): "scene: step N hash H s S = X" every BS_RUN_EVERY
+ * steps, then "scene: end status 0 steps N hash H most-contacts C"; H is the
+ * state's hash and S the bit pattern of s, so equal lines mean bit-identical
+ * states; X is s as a number a reader can take in (9 decimals, formatted
+ * with integers: the same digits on every C library).
  *
  * Cost mode (-DBS_RUN_COST=1): every step is bracketed by bs_board_mark(), so
  * that the instruction counter (tests/qemu/count.sh) prints one count per
@@ -34,14 +36,12 @@
  * on data reads). The copy is bit for bit the constant, so the printed
  * hashes are those of the default build.
  */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include "beamslider.h"
 #include BS_SCENE_CONFIG
 #include "bs_board.h"
-#if BS_RUN_COST
-#include "bs_prepare.h" /* a core-internal header: the tight phase changes its scene after init */
-#endif
 
 #ifndef BS_RUN_STEPS
 #define BS_RUN_STEPS 20000
@@ -60,6 +60,9 @@
 #endif
 #ifndef BS_RUN_SKIP
 #define BS_RUN_SKIP 0 /* cost mode: steps run unmarked before the counted ones */
+#endif
+#if BS_RUN_COST
+#include "bs_prepare.h" /* a core-internal header: the tight phase changes its scene after init */
 #endif
 
 static bs_sim sim;
@@ -100,6 +103,18 @@ static unsigned long bits(bs_real value)
 #endif
 }
 
+/* s as "0.299981234": its 9 decimals rounded and printed as integers, so
+ * that newlib on the target and glibc on the host print the same digits
+ * (the product and floor are exact IEEE operations on both). */
+static void print_number(bs_real value)
+{
+    const double x = (double)value;
+    const double scaled = floor((x < 0.0 ? -x : x) * 1e9 + 0.5);
+    const unsigned long whole = (unsigned long)(scaled / 1e9);
+    const unsigned long decimals = (unsigned long)(scaled - (double)whole * 1e9);
+    printf("%s%lu.%09lu", x < 0.0 ? "-" : "", whole, decimals);
+}
+
 /* A step through a volatile pointer, so that the compiler cannot move work
  * across the marks around it. */
 static bs_status (*volatile step_function)(bs_sim *) = bs_sim_step;
@@ -121,9 +136,12 @@ static phase_result run(long steps, const char *phase)
             count += active & 1u;
         if (count > result.most)
             result.most = count;
-        if (!BS_RUN_COST && result.steps % BS_RUN_EVERY == 0)
-            printf("%s: step %ld hash %08lx s %08lx\n", phase, result.steps,
-                   (unsigned long)bs_sim_hash(&sim), bits(bs_sim_position(&sim)));
+        if (!BS_RUN_COST && result.steps % BS_RUN_EVERY == 0) {
+            printf("%s: step %ld hash %08lx s %08lx = ", phase, result.steps, (unsigned long)bs_sim_hash(&sim),
+                   bits(bs_sim_position(&sim)));
+            print_number(bs_sim_position(&sim));
+            printf("\n");
+        }
     }
     return result;
 }

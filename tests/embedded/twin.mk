@@ -40,11 +40,12 @@ $(TWIN_CLI): .force
 	@$(MAKE) --no-print-directory REAL=float $@
 endif
 
-# twin_pack reads the CSV with the one reader of its format (host/lib/measured_signals.c)
-TWIN_PACK_SRC := $(TWIN_SRC_DIR)/twin_pack.c host/lib/measured_signals.c host/lib/input_file.c
-$(TWIN_PACK): $(TWIN_PACK_SRC) $(TWIN_SRC_DIR)/twin_stream.h host/lib/measured_signals.h host/lib/input_file.h
+# twin_pack reads the CSV with the one reader of its format (host/lib/twin/measured_signals.c)
+TWIN_PACK_SRC := $(TWIN_SRC_DIR)/twin_pack.c host/lib/twin/measured_signals.c host/lib/io/input_file.c \
+                 host/lib/io/out_text.c
+$(TWIN_PACK): $(TWIN_PACK_SRC) $(TWIN_SRC_DIR)/twin_stream.h host/lib/twin/measured_signals.h host/lib/io/input_file.h
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(BASE_CFLAGS) -I$(TWIN_SRC_DIR) -Ihost/lib -o $@ $(TWIN_PACK_SRC) -lm
+	$(CC) $(CFLAGS) $(BASE_CFLAGS) -I$(TWIN_SRC_DIR) -Ihost/lib/twin -Ihost/lib/io -o $@ $(TWIN_PACK_SRC) -lm
 
 $(TWIN_DIR)/fig6-%s.csv: configs/fig6.ini configs/mssp2023.ini $(TWIN_CLI)
 	@mkdir -p $(dir $@)

@@ -5,7 +5,7 @@
  * deflection w(4L/7)), fig6 with a resistor load (the observer on the patch
  * voltage) and fig6 with a rectifier load (the deflection gains: a
  * transducer whose storage charges). The observer's constants are designed
- * once per signal (host/lib/observer_design.c, short response maps: they
+ * once per signal (host/lib/twin/observer_design.c, short response maps: they
  * need to be valid, not accurate). Each input picks a base, a model and a
  * start, then plays a program of calls:
  *   op % 10: 0 steps, 1 measured steps (bs_sim_step_measured), 2

@@ -1,5 +1,5 @@
 /* fuzz_excitation.c - libFuzzer target: a recorded base acceleration, CSV or
- * WAV (host/lib/excitation_file.c), as `run --excitation` reads it.
+ * WAV (host/lib/run/excitation_file.c), as `run --excitation` reads it.
  *
  * Input: 8 bytes of options, then the file's bytes (written to a file in a
  * private temporary folder: the reader opens it through input_file.c).

@@ -1,6 +1,6 @@
 /* fuzz_files.h - a private temporary folder for the targets that feed their
  * input to a reader as a file (the readers take paths, and open them through
- * host/lib/input_file.c, whose checks are part of what is fuzzed).
+ * host/lib/io/input_file.c, whose checks are part of what is fuzzed).
  *
  * fuzz_folder_make() creates $TMPDIR/bs_fuzz_XXXXXX (or under /tmp) once,
  * and removes it with the files named through fuzz_path() at exit. */

@@ -1,6 +1,6 @@
 /* fuzz_map.c - libFuzzer target: a map folder as map-merge and map-plot
- * read it (host/lib/map_store.c map_identity_read and map_found_read,
- * host/lib/map_case.c map_row_valid, host/lib/map_table.c; map-plot's
+ * read it (host/lib/map/map_store.c map_identity_read and map_found_read,
+ * host/lib/map/map_case.c map_row_valid, host/lib/map/map_table.c; map-plot's
  * read_table in host/cli/cli_map_plot.c is mirrored here line for line).
  *
  * Input: one flags byte, then the folder's files separated by lines "@@":

@@ -1,5 +1,5 @@
 /* fuzz_measured.c - libFuzzer target: the measured-signals reader
- * (host/lib/measured_signals.c), the one reader of the format for `twin
+ * (host/lib/twin/measured_signals.c), the one reader of the format for `twin
  * --measured` and twin_pack.
  *
  * Input: the file's bytes, written to a file in a private temporary folder.

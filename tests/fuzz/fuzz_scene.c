@@ -1,6 +1,6 @@
 /* fuzz_scene.c - libFuzzer target: the INI scene reader and the scene build.
  *
- * Whatever the bytes, scene_load (host/lib/scene_ini.c, libinih underneath) and
+ * Whatever the bytes, scene_load (host/lib/scene/scene_ini.c, libinih underneath) and
  * scene_build (modal analysis, shape fit, bs_scene_check) must not crash,
  * hang, leak or touch memory out of bounds, and must answer 0 or -1 with a
  * message. A scene the host accepts must also be accepted by bs_sim_init and

@@ -1,5 +1,5 @@
 /* fuzz_scene_set.c - libFuzzer target: a scene file with `--set`
- * assignments (host/lib/scene_ini.c scene_set_assignment), then the scene
+ * assignments (host/lib/scene/scene_ini.c scene_set_assignment), then the scene
  * build, as `run`, `map` and `twin` take them.
  *
  * Input: the scene text, then a line "#@set" and the assignments, each

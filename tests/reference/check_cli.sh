@@ -1,6 +1,6 @@
 #!/bin/sh
 # check_cli.sh - the bs-reference command line: output formats equal to
-# `beamslider run` (headers taken from host/lib/run.c), the transducer's
+# `beamslider run` (headers taken from host/lib/run/run.c), the transducer's
 # columns and summary, --base-accel (a replayed harmonic equals the scene's;
 # bad files are refused naming file and line), JSON keys, exit codes.
 #
@@ -28,16 +28,16 @@ else
     fail "modes: f_1..f_5 of docs/model.md 8" "$(cat "$tmp/modes")"
 fi
 
-# run: CSV headers identical to host/lib/run.c's
+# run: CSV headers identical to host/lib/run/run.c's
 "$bin" run configs/fig6.ini --t-end 0.02 --out "$tmp/steps.csv" --every 10 --periods "$tmp/periods.csv" >"$tmp/json" 2>"$tmp/err"
 status=$?
 [ $status -eq 0 ] && pass "run exits 0" || fail "run exits 0" "status $status: $(cat "$tmp/err")"
-want_steps=$(sed -n 's/^const char run_csv_header\[\] = "\(.*\)\\n";$/\1/p' host/lib/run.c)
-want_periods=$(sed -n 's/^const char run_periods_header\[\] = "\(.*\)\\n";$/\1/p' host/lib/run.c)
+want_steps=$(sed -n 's/^const char run_csv_header\[\] = "\(.*\)\\n";$/\1/p' host/lib/run/run.c)
+want_periods=$(sed -n 's/^const char run_periods_header\[\] = "\(.*\)\\n";$/\1/p' host/lib/run/run.c)
 [ -n "$want_steps" ] && [ "$(head -n 1 "$tmp/steps.csv")" = "$want_steps" ] \
-    && pass "steps CSV header = host/lib/run.c's" || fail "steps CSV header = host/lib/run.c's" "$(head -n 1 "$tmp/steps.csv") vs $want_steps"
+    && pass "steps CSV header = host/lib/run/run.c's" || fail "steps CSV header = host/lib/run/run.c's" "$(head -n 1 "$tmp/steps.csv") vs $want_steps"
 [ -n "$want_periods" ] && [ "$(head -n 1 "$tmp/periods.csv")" = "$want_periods" ] \
-    && pass "periods CSV header = host/lib/run.c's" || fail "periods CSV header = host/lib/run.c's" "$(head -n 1 "$tmp/periods.csv") vs $want_periods"
+    && pass "periods CSV header = host/lib/run/run.c's" || fail "periods CSV header = host/lib/run/run.c's" "$(head -n 1 "$tmp/periods.csv") vs $want_periods"
 rows=$(($(wc -l <"$tmp/steps.csv") - 1))
 [ "$rows" -eq 101 ] && pass "steps CSV: t = 0 and every 10th of 1000 steps" || fail "steps CSV rows" "$rows rows, expected 101"
 periods=$(($(wc -l <"$tmp/periods.csv") - 1))

@@ -1,5 +1,5 @@
 /* ref_run.h - a run of the reference model with the CSV outputs of
- * `beamslider run` (host/lib/run.c formats, plus the transducer's columns)
+ * `beamslider run` (host/lib/run/run.c formats, plus the transducer's columns)
  * and a summary. */
 #ifndef REF_RUN_H
 #define REF_RUN_H

@@ -1,6 +1,6 @@
 /* ref_scene.h - the reference model's scene: every constant of docs/model.md 2-6,
  * 10 and 11 in double (long double where time and phase need it), from the
- * project's scene parameters (host/lib/scene_params.h). */
+ * project's scene parameters (host/lib/scene/scene_params.h). */
 #ifndef REF_SCENE_H
 #define REF_SCENE_H
 

@@ -6,18 +6,19 @@
 #   make reference-compare    fig6, 10 s: core vs reference (tests/reference/compare.sh)
 #
 # The reference is always double (REAL does not apply); it reads scenes with
-# the project's INI reader: of HOST_LIB_OBJ only scene_ini.o, scene_fields.o
-# and schedule.o (the [excitation] schedule's parser), the rest of the host
-# library needs core objects.
+# the project's INI reader: of HOST_LIB_OBJ only scene_ini.o, scene_fields.o,
+# schedule.o (the [excitation] schedule's parser) and input_file.o (how a
+# file is opened), the rest of the host library needs core objects.
 
 REF_DIR := tests/reference
 REF_BUILD := $(BUILD)/reference
 REF_SRC := $(filter-out $(REF_DIR)/ref_main.c $(REF_DIR)/test_reference.c,$(wildcard $(REF_DIR)/*.c))
 REF_OBJ := $(REF_SRC:%.c=$(REF_BUILD)/%.o)
-REF_INI_OBJ := $(REF_BUILD)/host/lib/scene_ini.o $(REF_BUILD)/host/lib/scene_fields.o $(REF_BUILD)/host/lib/schedule.o
+REF_INI_OBJ := $(REF_BUILD)/host/lib/scene/scene_ini.o $(REF_BUILD)/host/lib/scene/scene_fields.o \
+               $(REF_BUILD)/host/lib/scene/schedule.o $(REF_BUILD)/host/lib/io/input_file.o
 REF_CONFIG_H := $(BUILD)/double/include/bs_build_config.h
-REF_CFLAGS := $(BASE_CFLAGS) -I$(BUILD)/double/include -Icore/include -Iport -Iport/host -Ihost/lib -I$(REF_DIR)
-REF_HEADERS := $(wildcard $(REF_DIR)/*.h host/lib/*.h)
+REF_CFLAGS := $(BASE_CFLAGS) -I$(BUILD)/double/include -Icore/include -Iport -Iport/host $(HOST_INC) -I$(REF_DIR)
+REF_HEADERS := $(wildcard $(REF_DIR)/*.h) $(HOST_HEADERS)
 
 .PHONY: reference reference-test reference-compare
 

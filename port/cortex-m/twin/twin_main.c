@@ -178,11 +178,12 @@ static bs_status consume(const twin_fifo_entry *sample)
 static void print_report(const twin_report *r)
 {
     const bs_observer_estimate *e = &r->estimate;
-    /* s, s_sigma, amplitude, power as `beamslider twin` writes them (--out) */
-    printf("t %lu.%lu s %.9g s_sigma %.4g amplitude %.6g power %.6g queued %lu lag %lu dropped %lu hash %08lx "
-           "est %08lx\n", (unsigned long)(r->tenths / 10u), (unsigned long)(r->tenths % 10u), (double)e->s,
-           (double)e->s_sigma, (double)e->amplitude, (double)e->power, (unsigned long)r->queued,
-           (unsigned long)r->lag, (unsigned long)r->dropped, (unsigned long)r->hash, (unsigned long)r->estimate_hash);
+    /* s, s_sigma, amplitude, power, outliers, health as `beamslider twin` writes them (--out) */
+    printf("t %lu.%lu s %.9g s_sigma %.4g amplitude %.6g power %.6g outliers %lu health %d queued %lu lag %lu "
+           "dropped %lu hash %08lx est %08lx\n", (unsigned long)(r->tenths / 10u), (unsigned long)(r->tenths % 10u),
+           (double)e->s, (double)e->s_sigma, (double)e->amplitude, (double)e->power, (unsigned long)e->outliers,
+           e->health, (unsigned long)r->queued, (unsigned long)r->lag, (unsigned long)r->dropped,
+           (unsigned long)r->hash, (unsigned long)r->estimate_hash);
 }
 
 /* The twin and its observer on scene and gains. */

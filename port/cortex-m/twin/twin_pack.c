@@ -4,7 +4,7 @@
  *
  *   twin_pack IN.csv OUT.stream
  *
- * The CSV is read by the one reader of its format, host/lib/measured_signals.c,
+ * The CSV is read by the one reader of its format, host/lib/twin/measured_signals.c,
  * the one `beamslider twin` reads it with: the same file is accepted or
  * refused by both, with the same line and reason (tests/check_inputs.sh).
  * What the firmware needs beyond the format: a whole number of Hz (the
