@@ -6,6 +6,7 @@
  * stop are restorable. */
 #include "support.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -377,6 +378,44 @@ static void test_failed_step_leaves_a_restorable_sim(void **state)
     assert_int_equal(bs_sim_restore(&copy, buffer, BS_CHECKPOINT_SIZE), BS_OK);
 }
 
+/* A contact problem that overflows (the fuzzed scene of the seed
+ * tests/fuzz/corpus/fuzz_step/regress-restore-nan-residual: a slider mass of
+ * 1 / DBL_MAX, which bs_scene_check takes, gives an infinite Delassus
+ * diagonal) leaves an unconverged report whose residual is not a number, or
+ * infinite, after a step that returns BS_OK with a finite state. Such a
+ * checkpoint restores (restore refused it: found by fuzz_step); such a
+ * residual in a report that says converged is no step's. */
+static void test_unconverged_report_that_is_not_a_number_restores(void **state)
+{
+    static const struct {
+        double residual;
+        uint32_t converged;
+        bs_status status;
+    } reports[] = {
+        { (double)NAN, 0, BS_OK },
+        { (double)INFINITY, 0, BS_OK },
+        { (double)NAN, 1, BS_E_CHECKPOINT_SCENE },
+        { (double)INFINITY, 1, BS_E_CHECKPOINT_SCENE },
+        { -(double)INFINITY, 0, BS_E_CHECKPOINT_SCENE },
+    };
+    unsigned char forged[sizeof buffer];
+    size_t k;
+    (void)state;
+    assert_int_equal(bs_sim_init(&sim, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+    run(&sim, 400);
+    assert_int_equal(bs_sim_save(&sim, buffer, BS_CHECKPOINT_SIZE), BS_OK);
+    for (k = 0; k < sizeof reports / sizeof reports[0]; ++k) {
+        const bs_real residual = (bs_real)reports[k].residual;
+        memcpy(forged, buffer, sizeof forged);
+        memcpy(forged + AT_REALS + (size_t)REAL_RESIDUAL * sizeof(bs_real), &residual, sizeof residual);
+        memcpy(forged + AT_COUNTS + 3 * 4, &reports[k].converged, 4);
+        reseal(forged);
+        assert_int_equal(bs_sim_init(&copy, &scene, BS_MODEL_FREE, BS_R(0.5)), BS_OK);
+        print_message("residual %g, converged %u\n", (double)residual, (unsigned)reports[k].converged);
+        assert_int_equal(bs_sim_restore(&copy, forged, BS_CHECKPOINT_SIZE), reports[k].status);
+    }
+}
+
 static void test_scene_hash_tells_scenes_apart(void **state)
 {
     (void)state;
@@ -410,6 +449,7 @@ int main(void)
         cmocka_unit_test(test_state_beyond_a_clamp_stop_restores),
         cmocka_unit_test(test_edited_checkpoints_break_no_rule),
         cmocka_unit_test(test_failed_step_leaves_a_restorable_sim),
+        cmocka_unit_test(test_unconverged_report_that_is_not_a_number_restores),
         cmocka_unit_test(test_scene_hash_tells_scenes_apart),
     };
     return cmocka_run_group_tests(tests, setup, NULL);

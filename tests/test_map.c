@@ -254,6 +254,58 @@ static void test_rows_carry_a_check_that_finds_damage(void **state)
         }
         assert_false(map_row_valid(&grid, row, i + 1, &c));
     }
+    /* a NUL byte behind a check made for it (a forged or damaged file, not
+     * text: the row would be cut there when read as a string; found by
+     * tests/fuzz/fuzz_map.c) */
+    {
+        char *last;
+        strcpy(copy, row);
+        last = strrchr(copy, ',');
+        copy[(size_t)(last - copy) - 2] = '\0';
+        snprintf(last + 1, 10, "%08lx\n", (unsigned long)map_row_check(copy, (size_t)(last - copy) + 1));
+        assert_false(map_row_valid(&grid, copy, length, &c));
+    }
+    /* result columns that map_case_run never writes, behind checks made for
+     * them (a count of 100 digits made map-merge write a map.csv that
+     * map-plot refuses; found by tests/fuzz/fuzz_map.c). Columns: case,
+     * point, repeat, the varied field, then s0 (4), status, outcome, ...,
+     * cycles (15), ..., steps (18), unconverged_steps (19), ..., hash (22),
+     * wall_s, check. */
+    {
+        static const struct {
+            int column;
+            const char *text;
+        } forged[] = {
+            { 19, "1" "0000000000" "0000000000" "0000000000" "0000000000" "0000000000" "0000000000" },
+            { 19, "-1" },
+            { 18, "9007199254740993" },
+            { 15, "1.5" },
+            { 5, "fine" },
+            { 5, "nan" },
+            { 6, "sideways" },
+            { 4, "inf" },
+            { 7, "1e999" },
+            { 22, "D33833D5" },
+        };
+        size_t k;
+        for (k = 0; k <= sizeof forged / sizeof forged[0]; ++k) {
+            const char *at = row;
+            char *last;
+            int i;
+            for (i = 0; k < sizeof forged / sizeof forged[0] && i < forged[k].column; ++i)
+                at = strchr(at, ',') + 1;
+            if (k < sizeof forged / sizeof forged[0])
+                snprintf(copy, sizeof copy, "%.*s%s%s", (int)(at - row), row, forged[k].text, at + strcspn(at, ","));
+            else
+                strcpy(copy, row); /* the row itself, re-sealed, still is one */
+            last = strrchr(copy, ',');
+            snprintf(last + 1, 10, "%08lx\n", (unsigned long)map_row_check(copy, (size_t)(last - copy) + 1));
+            if (map_row_valid(&grid, copy, strlen(copy), &c) != (k == sizeof forged / sizeof forged[0])) {
+                print_error("a forged row was taken, or the row re-sealed refused: %s", copy);
+                fail();
+            }
+        }
+    }
     /* a row of another grid */
     map_grid_free(&grid);
     {

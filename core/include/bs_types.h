@@ -82,7 +82,9 @@ typedef struct bs_step_report {
     int systems;             /* linear systems of the active-set method solved (two or more contacts) */
     bs_real residual;        /* natural-map residual of the returned percussions [N s];
                                 -1 when not measured (measure_residual = 0 and the solve did not
-                                need it: one contact, or two whose laws hold by sign) */
+                                need it: one contact, or two whose laws hold by sign); +inf or
+                                NaN, with converged 0, when the contact problem overflowed (a
+                                scene at the edge of the ranges: an infinite Delassus entry) */
     int converged;           /* 1: residual <= tol_rel * scale + tol_abs (or no contact; or, not
                                 measured, the single contact's exact solve held); 0: not */
 } bs_step_report;

@@ -287,12 +287,15 @@ static int zero_beyond(const bs_real *values, int from, int count)
 }
 
 /* The step's report: counts within what a solve can take, a residual >= 0
- * or -1 (not measured). */
+ * or -1 (not measured), or, unconverged, +inf or not a number (a contact
+ * problem that overflows, e.g. an infinite Delassus diagonal: the step keeps
+ * a finite state and reports the solve as it went; tests/test_checkpoint.c). */
 static int acceptable_report(const saved_state *s)
 {
     return s->counts[0] < (1u << BS_MAX_CONTACTS) && s->counts[1] <= (uint32_t)BS_SOLVER_MAX_SWEEPS
-           && s->counts[2] <= (uint32_t)BS_SOLVER_MAX_SWEEPS && s->counts[3] <= 1u && finite(&s->residual, 1)
-           && (s->residual >= BS_R(0.0) || s->residual == BS_R(-1.0));
+           && s->counts[2] <= (uint32_t)BS_SOLVER_MAX_SWEEPS && s->counts[3] <= 1u
+           && (finite(&s->residual, 1) ? s->residual >= BS_R(0.0) || s->residual == BS_R(-1.0)
+                                        : s->counts[3] == 0u && !(s->residual < BS_R(0.0)));
 }
 
 /* Percussions: finite, 0 for every contact the last step did not have

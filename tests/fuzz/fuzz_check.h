@@ -7,13 +7,13 @@
 #include "beamslider.h"
 
 /* Prints what broke and aborts (libFuzzer saves the input as a crash). */
-static void fuzz_fail(const char *what)
+static inline void fuzz_fail(const char *what)
 {
     fprintf(stderr, "fuzz invariant broken: %s\n", what);
     abort();
 }
 
-static int fuzz_finite(bs_real x)
+static inline int fuzz_finite(bs_real x)
 {
     return x - x == BS_R(0.0);
 }
@@ -21,7 +21,7 @@ static int fuzz_finite(bs_real x)
 /* The whole dynamic state of a sim is finite: q, u, slider pose and
  * velocities, the compensated-sum remainder and the warm-start percussions
  * (members are private; a test may look). */
-static int fuzz_state_finite(const bs_sim *sim)
+static inline int fuzz_state_finite(const bs_sim *sim)
 {
     int k, r;
     for (k = 0; k < sim->scene->n_modes; ++k)
@@ -41,7 +41,7 @@ static int fuzz_state_finite(const bs_sim *sim)
 
 /* The state a successful step leaves, handed back through bs_sim_set_state
  * (on a copy), must be accepted: what the step produces, set_state takes. */
-static void fuzz_state_restorable(const bs_sim *sim)
+static inline void fuzz_state_restorable(const bs_sim *sim)
 {
     static bs_sim copy;
     bs_real q[BS_MAX_MODES], u[BS_MAX_MODES], pose[3], velocity[3];
@@ -55,7 +55,7 @@ static void fuzz_state_restorable(const bs_sim *sim)
  * bs_sim_set_state accepts, or BS_E_UNSTABLE / BS_E_NONFINITE / BS_E_ESCAPED
  * with the state (hash) as it was, also when the failing step is tried
  * again. Returns the status. */
-static bs_status fuzz_step_checked(bs_sim *sim)
+static inline bs_status fuzz_step_checked(bs_sim *sim)
 {
     const uint32_t before = bs_sim_hash(sim);
     const bs_status status = bs_sim_step(sim);
@@ -73,6 +73,8 @@ static bs_status fuzz_step_checked(bs_sim *sim)
             fuzz_fail("bs_sim_step reported convergence other than 0 or 1");
         if (report.residual < BS_R(0.0) && !(report.residual == BS_R(-1.0) && !solver.measure_residual))
             fuzz_fail("bs_sim_step reported a negative residual other than -1 (not measured)");
+        if (!fuzz_finite(report.residual) && report.converged)
+            fuzz_fail("bs_sim_step reported a converged solve whose residual is not finite");
         fuzz_state_restorable(sim);
         return status;
     }

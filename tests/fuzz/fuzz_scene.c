@@ -1,6 +1,6 @@
 /* fuzz_scene.c - libFuzzer target: the INI scene reader and the scene build.
  *
- * Whatever the bytes, scene_load (host/lib/scene_ini.c, libinih underneath) and
+ * Whatever the bytes, scene_load (host/lib/scene/scene_ini.c, libinih underneath) and
  * scene_build (modal analysis, shape fit, bs_scene_check) must not crash,
  * hang, leak or touch memory out of bounds, and must answer 0 or -1 with a
  * message. A scene the host accepts must also be accepted by bs_sim_init and
@@ -26,14 +26,13 @@
 
 #include "beamslider.h"
 #include "fuzz_check.h"
+#include "fuzz_scene_run.h"
 #include "scene_build.h"
 
 #ifndef FUZZ_CONFIGS
 #define FUZZ_CONFIGS "configs"
 #endif
 
-#define FUZZ_STEPS 16
-#define FUZZ_MAX_SWEEPS 64 /* as in fuzz_step.c: a step costs up to the cap, by design */
 
 static char folder[64];
 static char scene_path[SCENE_PATH];
@@ -41,7 +40,6 @@ static char base_path[SCENE_PATH];
 static scene_file file;   /* static: large */
 static bs_scene scene;
 static scene_model model;
-static bs_sim sim;
 static char message[1024];
 
 static void die(const char *what)
@@ -134,9 +132,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     const size_t cut = split(data, size);
-    bs_status status;
     int status_host;
-    int n;
 
     write_bytes(scene_path, data, cut);
     if (cut < size)
@@ -155,22 +151,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (status_host != 0)
         return 0;
 
-    /* what the host accepts, the core must accept and run */
-    status = bs_sim_init(&sim, &scene, (bs_model)file.params.model, (bs_real)file.params.s0);
-    if (status == BS_OK) {
-        bs_solver_options solver = scene_solver(&file.params);
-        if (solver.max_sweeps > FUZZ_MAX_SWEEPS && !getenv("FUZZ_STRICT"))
-            solver.max_sweeps = FUZZ_MAX_SWEEPS;
-        status = bs_sim_set_solver(&sim, &solver);
-    }
-    if (status != BS_OK) {
-        fprintf(stderr, "bs_sim_init: %s\n", bs_status_text(status));
-        die("the host accepted a scene the core refuses");
-    }
-    if (!fuzz_state_finite(&sim))
-        die("bs_sim_init returned BS_OK with a non-finite state");
-    for (n = 0; n < FUZZ_STEPS && fuzz_step_checked(&sim) == BS_OK; ++n)
-        ;
-
+    fuzz_scene_runs(&file, &scene); /* what the host accepts, the core must accept and run */
     return 0;
 }

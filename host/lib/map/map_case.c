@@ -231,6 +231,99 @@ int map_case_run(const map_grid *grid, const scene_file *base, long c, char *row
     return 0;
 }
 
+/* What each result column (MAP_RUN_COLUMNS, in order) of a row read back
+ * must hold. A map's folder is input: a row's check tells a whole line from
+ * a torn one, not a row map_case_run wrote from one edited or written by
+ * another program, and the merged tables are made of these columns (a
+ * count of 100 digits in unconverged_steps gave a map.csv that map-plot
+ * refuses; found by tests/fuzz/fuzz_map.c). */
+typedef enum column_kind {
+    COLUMN_NUMBER,        /* a finite number */
+    COLUMN_NUMBER_OR_NAN, /* a finite number, or nan (none) */
+    COLUMN_STATUS,        /* a word of status_word */
+    COLUMN_OUTCOME,       /* a class name (outcome.h) */
+    COLUMN_COUNT,         /* an integer in [0, 2^53] (steps: at most 2^53 a run) */
+    COLUMN_HASH           /* 8 lower-case hex digits */
+} column_kind;
+
+static const struct result_column {
+    const char *name;
+    column_kind kind;
+} result_columns[] = {
+    { "s0", COLUMN_NUMBER },
+    { "status", COLUMN_STATUS },
+    { "outcome", COLUMN_OUTCOME },
+    { "s_final", COLUMN_NUMBER_OR_NAN },
+    { "s_end", COLUMN_NUMBER_OR_NAN },
+    { "s_min", COLUMN_NUMBER_OR_NAN },
+    { "t_s_min", COLUMN_NUMBER_OR_NAN },
+    { "amp_h", COLUMN_NUMBER_OR_NAN },
+    { "amp_max_h", COLUMN_NUMBER_OR_NAN },
+    { "v_last", COLUMN_NUMBER_OR_NAN },
+    { "v_peak", COLUMN_NUMBER_OR_NAN },
+    { "cycles", COLUMN_COUNT },
+    { "power_w", COLUMN_NUMBER_OR_NAN },
+    { "energy_j", COLUMN_NUMBER_OR_NAN },
+    { "steps", COLUMN_COUNT },
+    { "unconverged_steps", COLUMN_COUNT },
+    { "max_pgs_iters", COLUMN_COUNT },
+    { "max_systems", COLUMN_COUNT },
+    { "hash", COLUMN_HASH },
+};
+#define RESULT_COLUMNS ((int)(sizeof result_columns / sizeof result_columns[0]))
+
+/* 1 if text (length characters) is what kind allows. */
+static int column_holds(column_kind kind, const char *text, size_t length)
+{
+    static const char *const statuses[] = { "ok", "unstable", "nonfinite", "escaped", "scene", "argument", "error" };
+    char copy[64], *end;
+    size_t i;
+    if (length == 0 || length >= sizeof copy)
+        return 0;
+    memcpy(copy, text, length);
+    copy[length] = '\0';
+    switch (kind) {
+    case COLUMN_NUMBER_OR_NAN:
+        if (!strcmp(copy, "nan"))
+            return 1;
+        /* fall through */
+    case COLUMN_NUMBER: {
+        const double x = strtod(copy, &end);
+        return !*end && isfinite(x) && strspn(copy, "+-.0123456789eE") == length;
+    }
+    case COLUMN_STATUS:
+        for (i = 0; i < sizeof statuses / sizeof statuses[0]; ++i)
+            if (!strcmp(copy, statuses[i]))
+                return 1;
+        return 0;
+    case COLUMN_OUTCOME:
+        return outcome_from_name(copy) >= 0;
+    case COLUMN_COUNT:
+        return strspn(copy, "0123456789") == length
+               && (length < 16 || (length == 16 && strcmp(copy, "9007199254740992") <= 0)); /* exactly, not rounded */
+    case COLUMN_HASH:
+        return length == 8 && strspn(copy, "0123456789abcdef") == 8;
+    }
+    return 0;
+}
+
+/* 1 if the result columns from at on hold what they must (and the table
+ * above names MAP_RUN_COLUMNS' columns in order). */
+static int result_columns_hold(const char *at)
+{
+    const char *name = MAP_RUN_COLUMNS;
+    int i;
+    for (i = 0; i < RESULT_COLUMNS; ++i) {
+        const size_t n = strcspn(at, ","), name_length = strcspn(name, ",");
+        if (name_length != strlen(result_columns[i].name) || strncmp(name, result_columns[i].name, name_length)
+            || !column_holds(result_columns[i].kind, at, n) || at[n] != ',')
+            return 0;
+        at += n + 1;
+        name += name_length + (name[name_length] == ',');
+    }
+    return *name == '\0';
+}
+
 /* The number of columns of grid's rows. */
 static int column_count(const map_grid *grid)
 {
@@ -250,8 +343,8 @@ int map_row_valid(const map_grid *grid, const char *line, size_t length, long *c
     int repeat, columns = 1, v;
     size_t i;
 
-    if (length < 12 || line[length - 1] != '\n')
-        return 0;
+    if (length < 12 || line[length - 1] != '\n' || memchr(line, '\0', length))
+        return 0; /* a NUL byte: not text (a reader taking the row as a string would cut it there) */
     for (i = 0; i + 1 < length; ++i)
         columns += line[i] == ',';
     if (columns != column_count(grid))
@@ -279,5 +372,5 @@ int map_row_valid(const map_grid *grid, const char *line, size_t length, long *c
             return 0;
         at += n + 1;
     }
-    return 1;
+    return result_columns_hold(at);
 }

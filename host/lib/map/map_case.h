@@ -36,8 +36,11 @@ void map_case_header(const map_grid *grid, char *out, size_t size);
 uint32_t map_row_check(const char *text, size_t length);
 
 /* 1 if line (length characters, with its newline) is a whole row of grid:
- * the right number of columns, its check, case < cases, point and repeat
- * and the varied values those of the case. *c is its case. */
+ * text (no NUL byte), the right number of columns, its check, case < cases,
+ * point and repeat and the varied values those of the case, and in each
+ * result column what map_case_run writes there (a finite number, or nan
+ * where there may be none; a status word; a class name; a count up to 2^53;
+ * 8 hex digits of the hash). *c is its case. */
 int map_row_valid(const map_grid *grid, const char *line, size_t length, long *c);
 
 #endif
