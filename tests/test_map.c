@@ -268,24 +268,25 @@ static void test_rows_carry_a_check_that_finds_damage(void **state)
     /* result columns that map_case_run never writes, behind checks made for
      * them (a count of 100 digits made map-merge write a map.csv that
      * map-plot refuses; found by tests/fuzz/fuzz_map.c). Columns: case,
-     * point, repeat, the varied field, then s0 (4), status, outcome, ...,
-     * cycles (15), ..., steps (18), unconverged_steps (19), ..., hash (22),
-     * wall_s, check. */
+     * point, repeat, the varied field, then s0 (4), status, outcome,
+     * s_settled (7), window_s, ..., cycles (16), ..., steps (19),
+     * unconverged_steps (20), ..., hash (23), wall_s, check. */
     {
         static const struct {
             int column;
             const char *text;
         } forged[] = {
-            { 19, "1" "0000000000" "0000000000" "0000000000" "0000000000" "0000000000" "0000000000" },
-            { 19, "-1" },
-            { 18, "9007199254740993" },
-            { 15, "1.5" },
+            { 20, "1" "0000000000" "0000000000" "0000000000" "0000000000" "0000000000" "0000000000" },
+            { 20, "-1" },
+            { 19, "9007199254740993" },
+            { 16, "1.5" },
             { 5, "fine" },
             { 5, "nan" },
             { 6, "sideways" },
             { 4, "inf" },
             { 7, "1e999" },
-            { 22, "D33833D5" },
+            { 8, "1e999" },
+            { 23, "D33833D5" },
         };
         size_t k;
         for (k = 0; k <= sizeof forged / sizeof forged[0]; ++k) {

@@ -290,11 +290,11 @@ def sealed(row):
 
 IDENTITY = ("# beamslider map: what this folder's results are of (docs/maps.md). A map command\n"
             "# whose identity differs is refused here; lines starting with info are not compared.\n"
-            "format = 1\nversion = 0.7.0\nprecision = double\nfields_hash = 311d3dbfcefb7ce3\nrepeat = 2\n"
+            "format = 2\nversion = 0.8.0\nprecision = double\nfields_hash = 311d3dbfcefb7ce3\nrepeat = 2\n"
             "perturbation = 1e-05\nvary excitation.frequency = 120,124\nvary excitation.acceleration = 10,14\n"
             "info revision = e052678d82b8\ninfo scene = fig6\ninfo scene_file = configs/fig6.ini\n"
             "info set = --set run.t_end=0.02\ninfo command = beamslider map configs/fig6.ini\n")
-RUNS_HEADER = ("case,point,repeat,excitation.frequency,excitation.acceleration,s0,status,outcome,s_final,s_end,"
+RUNS_HEADER = ("case,point,repeat,excitation.frequency,excitation.acceleration,s0,status,outcome,s_settled,window_s,s_end,"
                "s_min,t_s_min,amp_h,amp_max_h,v_last,v_peak,cycles,power_w,energy_j,steps,unconverged_steps,"
                "max_pgs_iters,max_systems,hash,wall_s,check\n")
 VALUES = [("120", "10"), ("120", "14"), ("124", "10"), ("124", "14")]
@@ -305,18 +305,18 @@ def row(c):
     point, repeat = c // 2, c % 2
     f, a = VALUES[point]
     status = "ok" if OUTCOMES[c] != "fault" else "stopped"
-    return ("%d,%d,%d,%s,%s,%.5g,%s,%s,0.2999%02d,0.30004,0.29991,0.016100,0.0889,0,0,0,0,nan,nan,1000,%d,1,4,d33833d5"
+    return ("%d,%d,%d,%s,%s,%.5g,%s,%s,0.2999%02d,0.02,0.30004,0.29991,0.016100,0.0889,0,0,0,0,nan,nan,1000,%d,1,4,d33833d5"
             % (c, point, repeat, f, a, 0.3 + 1e-5 * repeat, status, OUTCOMES[c], 40 + c, c % 3))
 
 
 ROWS_A = RUNS_HEADER + "".join(sealed(row(c)) for c in range(0, 8, 2))
 ROWS_B = RUNS_HEADER + "".join(sealed(row(c)) for c in range(1, 8, 2))
 POINTS_HEADER = ("point,excitation.frequency,excitation.acceleration,repeats,outcome,agreement,frac_trivial,"
-                 "frac_signature,frac_relaxation,frac_self_damping,frac_stop,frac_fault,frac_other,s_final_mean,"
-                 "s_final_sd,s_final_min,s_final_max,amp_h_mean,amp_h_sd,v_last_mean,v_peak_mean,power_w_mean,"
-                 "power_w_sd,unconverged_steps\n")
+                 "frac_signature,frac_relaxation,frac_self_damping,frac_stop,frac_fault,frac_other,s_settled_mean,"
+                 "s_settled_sd,s_settled_min,s_settled_max,amp_h_mean,amp_h_sd,v_last_mean,v_peak_mean,power_w_mean,"
+                 "power_w_sd,unconverged_steps,window_s\n")
 POINTS = POINTS_HEADER + "".join("%d,%s,%s,2,other,0.5,0,0.5,0,0,0,0,0.5,0.29994,2.5e-06,0.29993,0.29995,0.0889,"
-                                 "0.0001,0,0,nan,nan,1\n" % (p, f, a) for p, (f, a) in enumerate(VALUES))
+                                 "0.0001,0,0,nan,nan,1,0.02\n" % (p, f, a) for p, (f, a) in enumerate(VALUES))
 
 
 def folder(identity=IDENTITY, a=ROWS_A, b=ROWS_B, points=POINTS, flags=0):
@@ -333,7 +333,7 @@ maps = {
     "invalid_check": folder(a=ROWS_A + row(1) + ",0.0003,00000000\n"),
     "case_out_of_range": folder(a=ROWS_A + sealed(row(7).replace("7,3,1", "9,3,1", 1)), flags=1),
     "identity_control": folder(identity=IDENTITY.replace("info scene = fig6", "info scene = f\x1big6")),
-    "identity_format": folder(identity=IDENTITY.replace("format = 1", "format = 2")),
+    "identity_format": folder(identity=IDENTITY.replace("format = 2", "format = 1")),
     "identity_repeat": folder(identity=IDENTITY.replace("repeat = 2", "repeat = 0")),
     "identity_vary_twice": folder(identity=IDENTITY + "vary excitation.frequency = 1\n"),
     "identity_value_twice": folder(identity=IDENTITY.replace("= 120,124", "= 120,120")),
