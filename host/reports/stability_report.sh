@@ -3,11 +3,16 @@
 # (host/reports/stability.c) in both precisions into docs/stability.md.
 set -eu
 OUT=${OUT:-docs/stability.md}
+# the page's stamp (host/reports/provenance.sh): make stability builds both CLIs too
+. host/reports/provenance.sh
+stamp=$(provenance_stamp "make stability")
 double=$("$1")
 float=$("$2")
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 cat > "$OUT" <<DOC
 # Stability on stiff and extreme cases
+
+$stamp
 
 Produced by \`make stability\` (host/reports/stability.c, host/reports/stability_report.sh) on
 $(date -u +%Y-%m-%d), commit $commit. Each case is fig6 (five modes, a = 14 m/s^2,

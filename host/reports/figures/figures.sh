@@ -18,7 +18,7 @@ RUNS=${RUNS:-1}
 DATA=${DATA:-build/figures}
 FIG=${FIG:-docs/figures}
 DOC=${DOC:-docs/validation.md}
-HERE=host/figures
+HERE=host/reports/figures
 SCENARIOS="fig6 fig7 fig8 fig9 fig12a fig12b"
 export BIN DATA
 
@@ -29,6 +29,10 @@ for marker in figures-table figures-scenarios; do
     fi
 done
 mkdir -p "$DATA" "$FIG"
+# the section's and the figures' stamp (host/reports/provenance.sh; with RUNS=0 it is
+# the current build's, whatever made the CSVs reused)
+. host/reports/provenance.sh
+stamp=$(provenance_stamp "make figures")
 
 # ---------------------------------------------------------------------------
 # 1. Simulations: NAME ARGS... per line, the longest first. The sweeps use
@@ -117,11 +121,14 @@ for scene in $SCENARIOS; do
         out='$FIG/run_$scene.png';
         ttl='$scene: f_{ex} = $(ini $scene frequency) Hz, a = $(ini $scene acceleration) m/s^2, s_0 = $(get ${scene}_s0) ($description)'"
 done
+provenance_figures "$stamp" "$FIG"/fig1b.png "$FIG"/fig1b_modes.png "$FIG"/fig1c.png "$FIG"/fig2b.png "$FIG"/fig2c.png
+for scene in $SCENARIOS; do provenance_figures "$stamp" "$FIG/run_$scene.png"; done
 echo "figures: wrote $FIG/*.png" >&2
 
 # ---------------------------------------------------------------------------
 # 4. Tables for docs/validation.md (host/reports/figures/tables.awk: criteria, verdicts).
-awk -v part=table -f "$HERE/tables.awk" "$DATA/numbers.sh" > "$DATA/table.md"
+{ printf '%s\n' "$stamp"; provenance_text "$stamp"; echo; } > "$DATA/table.md"
+awk -v part=table -f "$HERE/tables.awk" "$DATA/numbers.sh" >> "$DATA/table.md"
 awk -v part=scenarios -f "$HERE/tables.awk" "$DATA/numbers.sh" > "$DATA/scenarios.md"
 awk -v table="$DATA/table.md" -v scenarios="$DATA/scenarios.md" '
     function copy(file,    line) { while ((getline line < file) > 0) print line; close(file) }
