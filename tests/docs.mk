@@ -6,11 +6,13 @@
 #                     every stale page and the command that regenerates it
 #   make docs-test    (part of `make test`, after test-one has built both CLIs)
 #                     the checker on stale copies (tests/check_docs_check.sh),
+#                     README.md's commands as on a fresh clone (tests/check_readme.sh),
 #                     then the pages as docs-check checks them
 .PHONY: docs-check docs-test
 docs-check: provenance-builds
 	@sh host/reports/docs_check.sh
 docs-test:
 	@sh tests/check_docs_check.sh
+	@sh tests/check_readme.sh
 	@sh host/reports/docs_check.sh
 TEST_EXTRA += docs-test
