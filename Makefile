@@ -226,6 +226,7 @@ TEST_LONG += twin-bias-long
 include tests/consumer/consumer.mk
 include tests/buildsys/buildsys.mk
 include tests/slurm/slurm.mk
+include tests/determinism.mk
 include tests/docs.mk
 
 # Builds run JOBS at a time (the prerequisites); the tests themselves in order.
