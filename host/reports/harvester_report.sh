@@ -215,8 +215,9 @@ else
     echo "Not at every load: at R_l = $3 Ohm the final position differs from the runs without transducer by $2 (mean over the starts), more than 0.005. Compare the columns \"turning point\", \"jump at t\" and \"s after 60 s\" with the row \"none\"."
 fi)
 The load's energy is counted from the midpoint voltage (docs/design.md 10): it
-reads high where R_l C_p approaches dt, by about 2 % at 1 kOhm, 0.25 % at
-10 kOhm and 1e-4 at 71 kOhm (tests/test_piezo.c measures it).
+reads high where R_l C_p approaches dt, by about 3 % at 1 kOhm, 0.25 % at
+10 kOhm and 1.5e-4 at 100 kOhm (tests/test_piezo.c prints the residual beside
+the load's energy).
 
 ## The ambient frequency moves after adaptation (configs/fig6_shift.ini)
 
