@@ -20,6 +20,7 @@
 #   make test-sweeps  the contact solve's tests built with BS_WITH_SUBSPACE=0
 #   make bench, fig6-report, accuracy, stability, figures, embedded-report, maps
 #                     the reports of docs/ (README.md, "Reports")
+#   make docs-check   whether the reports' pages still describe the code (tests/docs.mk)
 #   make clean
 #   make TARGET=cortex-m4f [SCENE=fig6] [REAL=float] [run]
 #                     cross build (and QEMU run) of one compiled scene
@@ -225,6 +226,8 @@ TEST_LONG += twin-bias-long
 include tests/consumer/consumer.mk
 include tests/buildsys/buildsys.mk
 include tests/slurm/slurm.mk
+include tests/determinism.mk
+include tests/docs.mk
 
 # Builds run JOBS at a time (the prerequisites); the tests themselves in order.
 test: deps-test

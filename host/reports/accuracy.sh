@@ -32,6 +32,9 @@ TMP=$(mktemp -d)
 export TMP
 trap 'rm -rf "$TMP"' EXIT
 mkdir -p "$(dirname "$FIG")"
+# the page's and the figure's stamp (host/reports/provenance.sh)
+. host/reports/provenance.sh
+stamp=$(provenance_stamp "make accuracy")
 
 json() { sed -n "s/.*\"$1\":\"\{0,1\}\([^,\"}]*\).*/\1/p" "$2"; }
 
@@ -266,8 +269,11 @@ plot "$TMP/series-fig6-double.dat" with points pt 7 title "5 modes, double", \
 GP
 
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+provenance_figures "$stamp" "$FIG"
 cat > "$OUT" <<DOC
 # Accuracy
+
+$stamp
 
 Produced by \`make accuracy\` (host/reports/accuracy.sh) on $(date -u +%Y-%m-%d), commit $commit.
 The oracle is \`build/bs-reference\` (tests/reference/), a double-precision implementation of

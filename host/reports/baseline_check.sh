@@ -29,6 +29,10 @@ TMP=$(mktemp -d)
 export TMP
 trap 'rm -rf "$TMP"' EXIT
 . host/reports/speeds.sh
+# the page's stamp (host/reports/provenance.sh), naming the make line that made it
+. host/reports/provenance.sh
+make_line="make baseline-check BASELINE=$BASELINE$( [ "$OUT" = docs/baseline.md ] || printf " OUT=%s" "$OUT")$( [ -z "$THIS_ARGS" ] || printf " THIS_ARGS='%s'" "$THIS_ARGS")$( [ "$TOLERANCE" = 2 ] || printf " TOLERANCE=%s" "$TOLERANCE")"
+stamp=$(provenance_stamp "$make_line")
 
 # the baseline's tree and binaries (build/baseline/src, reused while it is the same commit)
 if [ "$BASELINE" = this ]; then
@@ -100,7 +104,9 @@ verdict=$([ $status -eq 0 ] && echo "Every mean is within +-$TOLERANCE % of the 
 cat > "$OUT" <<DOC
 # Slow dynamics against a baseline
 
-Produced by \`make baseline-check BASELINE=$BASELINE$( [ "$OUT" = docs/baseline.md ] || printf " OUT=%s" "$OUT")$( [ -z "$THIS_ARGS" ] || printf " THIS_ARGS='%s'" "$THIS_ARGS")$( [ "$TOLERANCE" = 2 ] || printf " TOLERANCE=%s" "$TOLERANCE")\` (host/reports/baseline_check.sh) on
+$stamp
+
+Produced by \`$make_line\` (host/reports/baseline_check.sh) on
 $(date -u +%Y-%m-%d), $ENSEMBLE runs per build and precision: this tree's build ($(build/double/beamslider --version | sed 's/, core precision.*//'))$( [ -z "$THIS_ARGS" ] || printf ", run with \`%s\`," "$THIS_ARGS")
 against $( [ "$BASELINE" = this ] && echo "the same build running the scene as it is" || echo "commit $(git rev-parse --short "$commit") ($(git log -1 --format=%s "$commit" | cut -c1-60)...)").
 

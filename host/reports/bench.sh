@@ -18,6 +18,10 @@ BENCH_BASELINE=${BENCH_BASELINE:-2326ca8}
 OUT=${OUT:-docs/performance.md}
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
+# the page's stamp (host/reports/provenance.sh): the builds measured, the sources of
+# build/*/beamslider and the flags they were compiled with
+. host/reports/provenance.sh
+stamp=$(provenance_stamp "make bench$( [ "$BENCH_BASELINE" = 2326ca8 ] || printf ' BENCH_BASELINE=%s' "$BENCH_BASELINE")" host)
 . host/reports/baseline_tree.sh
 baseline=$(git rev-parse --short "$(baseline_tree "$BENCH_BASELINE")")
 
@@ -107,6 +111,8 @@ fig6_met=$(awk -v r="$fig6_ratio" 'BEGIN { print (r >= 2 ? "met" : "**not met**"
 
 cat > "$OUT" <<EOF
 # Performance
+
+$stamp
 
 Produced by \`make bench\` (host/reports/bench.sh) on $(date -u +%Y-%m-%d), commit $commit, against
 commit $baseline (\`BENCH_BASELINE\`: 0.7.0, before the step's redesign of 0.8.0).

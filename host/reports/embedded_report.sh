@@ -48,6 +48,10 @@ OUT=${OUT:-docs/embedded.md}
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 
+# the page's stamp (host/reports/provenance.sh): the sources of the images and the flags
+. host/reports/provenance.sh
+stamp=$(provenance_stamp "make embedded-report" embedded)
+
 sh tests/qemu/build-plugin.sh >&2
 
 # Boards of the real-time targets at dt = 2e-5 s: clock [MHz] and cycles per step
@@ -524,6 +528,8 @@ fig6_ram_reads=$(m4f fig6 subspace-ram-whole scene flash)
 twin_section=$(sed -n '/^## Twin firmware$/,$p' "$OUT" 2>/dev/null || :)
 cat > "$OUT" <<EOF
 # The core on Cortex-M
+
+$stamp
 
 Produced by \`make embedded-report\` (host/reports/embedded_report.sh) on $(date -u +%Y-%m-%d), commit $commit,
 with $(arm-none-eabi-gcc --version | head -n 1) (\`$CM_OPT\`, \`-std=c99\`, no fused multiply-add) and

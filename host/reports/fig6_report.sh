@@ -17,6 +17,10 @@ set -eu
 DOC=${DOC:-docs/validation.md}
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
+# the section's stamp (host/reports/provenance.sh), and a line saying it: at the top
+# of the first table's markers (both tables are this command's)
+. host/reports/provenance.sh
+stamp=$(provenance_stamp "make fig6-report")
 
 for marker in fig6-table fig6-sensitivity; do
     if ! grep -q "<!-- $marker -->" "$DOC"; then
@@ -29,7 +33,10 @@ json() { # json FIELD FILE
     sed -n "s/.*\"$1\":\"\{0,1\}\([^,\"}]*\).*/\1/p" "$2"
 }
 
-table="| scene | precision | turning point s_min | at t [s] | jump at t [s] | jump at s | amp before jump [h] | amp last 10 s [h] | s after 60 s | walk back ds/period (1-5 s after jump) | wall [s] |
+table="$stamp
+$(provenance_text "$stamp")
+
+| scene | precision | turning point s_min | at t [s] | jump at t [s] | jump at s | amp before jump [h] | amp last 10 s [h] | s after 60 s | walk back ds/period (1-5 s after jump) | wall [s] |
 |---|---|---|---|---|---|---|---|---|---|---|
 "
 for scene in fig6 fig6_1mode; do

@@ -32,6 +32,9 @@ if ! grep -q '<!-- maps-numbers -->' "$DOC" || ! grep -q '<!-- /maps-numbers -->
     exit 1
 fi
 mkdir -p "$(dirname "$DIR")" "$FIG"
+# the section's and the figures' stamp (host/reports/provenance.sh)
+. host/reports/provenance.sh
+stamp=$(provenance_stamp "make maps")
 command="$BIN map configs/fig6.ini --set run.t_end=120 --vary excitation.frequency=90:140:1 \
 --vary excitation.acceleration=2:20:2 --repeat 3 --jobs $JOBS --out $DIR"
 echo "maps: $command" >&2
@@ -43,6 +46,7 @@ for mark in $MARKS; do set -- "$@" --mark "$mark"; done
 "$BIN" map-plot "$DIR" --out "$DIR-plot" --title "validated set (fig6.ini), 120 s from s0 = 0.3" "$@"
 for figure in outcome agreement s_settled s_spread amp_h; do
     cp "$DIR-plot_$figure.png" "$FIG/map_$figure.png"
+    provenance_figures "$stamp" "$FIG/map_$figure.png"
 done
 
 # ---- numbers
@@ -51,6 +55,7 @@ run_json=$(for f in "$DIR"-run-*.json; do
 field() { sed -n "s/.*\"$1\":\"\{0,1\}\([^,\"}]*\).*/\1/p" "$run_json"; }
 cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -n 1)
 {
+    echo "$stamp"
     echo "Produced by \`make maps\` (host/reports/maps_report.sh) on $(date -u +%Y-%m-%d): beamslider"
     echo "$(field version) (revision $(field revision)), $(field precision) precision."
     echo

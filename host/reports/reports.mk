@@ -27,7 +27,23 @@
 #
 # `make test` also runs sweep-check (host/reports/figures/check_sweep.sh).
 
-.PHONY: fig6-report accuracy stability bench baseline-check harvester-report twin-report figures sweep-check deps-figures
+.PHONY: fig6-report accuracy stability bench baseline-check harvester-report twin-report figures sweep-check deps-figures \
+        provenance-builds
+
+# Every report stamps what it writes with the state hashes of both precisions'
+# CLI (host/reports/provenance.sh), and a page of measured cost with the compiler
+# and flags, which make passes to the scripts here.
+REPORTS := fig6-report accuracy stability bench baseline-check harvester-report twin-report figures maps \
+           embedded-report twin-firmware-report
+export PROVENANCE_CC := $(strip $(CC))
+export PROVENANCE_CFLAGS := $(strip $(CFLAGS))
+export PROVENANCE_CORE_OPT := $(strip $(CORE_OPT))
+export PROVENANCE_CM_CC := $(strip $(CM_CC))
+export PROVENANCE_CM_OPT := $(strip $(CM_OPT))
+$(REPORTS): provenance-builds
+provenance-builds:
+	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
 
 fig6-report:
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider

@@ -3,11 +3,23 @@
 # (host/reports/stability.c) in both precisions into docs/stability.md.
 set -eu
 OUT=${OUT:-docs/stability.md}
+# the page's stamp (host/reports/provenance.sh): make stability builds both CLIs too
+. host/reports/provenance.sh
+stamp=$(provenance_stamp "make stability")
 double=$("$1")
 float=$("$2")
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+# when the cubic stiffening stopped the step just below the linear limit (the rows'
+# own numbers, so that the prose below cannot drift from them)
+stopped() { # stopped TABLE -> the time of the "dt just below the limit" row
+    printf '%s\n' "$1" | sed -n 's/^| dt just below the limit |.*stopped at t = \([0-9.e+-]*\) s.*/\1/p'
+}
+stop_double=$(stopped "$double")
+stop_float=$(stopped "$float")
 cat > "$OUT" <<DOC
 # Stability on stiff and extreme cases
+
+$stamp
 
 Produced by \`make stability\` (host/reports/stability.c, host/reports/stability_report.sh) on
 $(date -u +%Y-%m-%d), commit $commit. Each case is fig6 (five modes, a = 14 m/s^2,
@@ -31,8 +43,8 @@ solve ended above its tolerance; each is reported by the step.
 
 The explicit step's limit omega dt < 2 is checked on the stiffness it integrates
 explicitly: every mode's omega_k^2 plus the cubic term's tangent stiffness (a Gershgorin
-bound, every step). Just below the linear limit the cubic stiffening crosses it within
-0.07 s and the step says so; the linearly implicit step (\`[numerics] integrator =
+bound, every step). Just below the linear limit the cubic stiffening crosses it (at
+t = ${stop_double:-?} s in double, ${stop_float:-?} s in float) and the step says so; the linearly implicit step (\`[numerics] integrator =
 implicit\`, theta = 1/2: modal stiffness and damping on the end-of-step state, a
 diagonal solve) is stable at 4 times the explicit limit, with 10 and 20 modes at the
 default step, and costs the same per step (see docs/design.md 4; its accuracy against the

@@ -43,6 +43,9 @@ csv=$1
 shift
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
+# the section's stamp (host/reports/provenance.sh): the sources of the images and the flags
+. host/reports/provenance.sh
+stamp=$(provenance_stamp "make twin-firmware-report" twin-firmware)
 sh tests/qemu/build-plugin.sh >&2
 
 DT=0.00002                      # the stream's sample period [s] (fig6)
@@ -257,6 +260,8 @@ git diff --quiet HEAD -- core port configs tests/embedded 2>/dev/null ||
 
 cat > "$TMP/section" <<EOF
 ## Twin firmware
+
+$stamp
 
 Produced by \`make twin-firmware-report\` (host/reports/twin_firmware_report.sh; also run by
 \`make embedded-report\`) on $(date -u +%Y-%m-%d), commit $commit, with the same compiler,

@@ -18,8 +18,12 @@ RUNS=${RUNS:-1}
 DATA=${DATA:-build/figures}
 FIG=${FIG:-docs/figures}
 DOC=${DOC:-docs/validation.md}
-HERE=host/figures
+HERE=host/reports/figures
 SCENARIOS="fig6 fig7 fig8 fig9 fig12a fig12b"
+# fig8's ensemble: ENSEMBLE starts s0 + k ENSEMBLE_STEP (k = 0 is the scene's own run,
+# the one run_fig8.png draws), since one run of a chaotic scene may not be typical
+ENSEMBLE=8
+ENSEMBLE_STEP=1e-5
 export BIN DATA
 
 for marker in figures-table figures-scenarios; do
@@ -29,6 +33,16 @@ for marker in figures-table figures-scenarios; do
     fi
 done
 mkdir -p "$DATA" "$FIG"
+# the section's and the figures' stamp (host/reports/provenance.sh; with RUNS=0 it is
+# the current build's, whatever made the CSVs reused)
+. host/reports/provenance.sh
+stamp=$(provenance_stamp "make figures")
+
+# ensemble_s0 K -> s0 of start K of fig8's ensemble (the scene's s0 + K ENSEMBLE_STEP)
+ensemble_s0() {
+    awk -v s0="$(sed -n 's/^s0 *= *\([0-9.]*\).*/\1/p' configs/fig8.ini)" -v k="$1" -v step="$ENSEMBLE_STEP" \
+        'BEGIN { printf "%.5f", s0 + k * step }'
+}
 
 # ---------------------------------------------------------------------------
 # 1. Simulations: NAME ARGS... per line, the longest first. The sweeps use
@@ -41,6 +55,11 @@ mkdir -p "$DATA" "$FIG"
     done
     for scene in fig7 fig8 fig12a fig12b fig9 fig6 fig6_1mode; do
         echo "${scene}_run run configs/$scene.ini --periods $DATA/${scene}_periods.csv"
+    done
+    k=1
+    while [ "$k" -lt "$ENSEMBLE" ]; do
+        echo "fig8_e${k}_run run configs/fig8.ini --s0 $(ensemble_s0 "$k") --periods $DATA/fig8_e${k}_periods.csv"
+        k=$((k + 1))
     done
     for dir in up down; do
         echo "fig6_1mode_$dir sweep configs/fig6_1mode.ini --dir $dir --out $DATA/fig6_1mode_$dir.csv"
@@ -81,6 +100,23 @@ for scene in $SCENARIOS; do
         "$DATA/${scene}_smooth.csv" >> "$DATA/numbers.sh"
     echo "${scene}_s0='$s0'" >> "$DATA/numbers.sh"
 done
+# the ensemble: start k's numbers under the prefix fig8_eK (fig8_e0: the scene's run)
+k=0
+echo "fig8_ensemble='$ENSEMBLE'" >> "$DATA/numbers.sh"
+echo "fig8_ensemble_step='$ENSEMBLE_STEP'" >> "$DATA/numbers.sh"
+while [ "$k" -lt "$ENSEMBLE" ]; do
+    if [ "$k" -eq 0 ]; then
+        periods=$DATA/fig8_periods.csv
+        s0=$(sed -n 's/.*"s0":\([^,]*\).*/\1/p' "$DATA/fig8_run.json")
+    else
+        periods=$DATA/fig8_e${k}_periods.csv
+        s0=$(ensemble_s0 "$k")
+    fi
+    awk -F, -f "$HERE/smooth.awk" "$periods" > "$DATA/fig8_e${k}_smooth.csv"
+    awk -F, -v prefix="fig8_e$k" -v s0="$s0" -f "$HERE/scenario.awk" "$periods" "$DATA/fig8_e${k}_smooth.csv" >> "$DATA/numbers.sh"
+    echo "fig8_e${k}_s0='$s0'" >> "$DATA/numbers.sh"
+    k=$((k + 1))
+done
 . "$DATA/numbers.sh"
 get() { eval "printf '%s' \"\${$1}\""; }                                # get VARIABLE
 lt() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a + 0 < b + 0) }'; }  # lt A B: A < B
@@ -117,11 +153,21 @@ for scene in $SCENARIOS; do
         out='$FIG/run_$scene.png';
         ttl='$scene: f_{ex} = $(ini $scene frequency) Hz, a = $(ini $scene acceleration) m/s^2, s_0 = $(get ${scene}_s0) ($description)'"
 done
+# fig8's ensemble: every start's 1 s averages, the scene's own start (run_fig8.png) bold
+ensemble_files=
+k=0
+while [ "$k" -lt "$ENSEMBLE" ]; do ensemble_files="$ensemble_files $DATA/fig8_e${k}_smooth.csv"; k=$((k + 1)); done
+gp ensemble.gp "files='${ensemble_files# }'; out='$FIG/run_fig8_ensemble.png';
+    ttl='fig8 from $ENSEMBLE starts s_0 = $fig8_s0 + k $ENSEMBLE_STEP (k = 0..$((ENSEMBLE - 1))); bold: s_0 = $fig8_s0, the run of run\\_fig8.png'"
+provenance_figures "$stamp" "$FIG"/fig1b.png "$FIG"/fig1b_modes.png "$FIG"/fig1c.png "$FIG"/fig2b.png "$FIG"/fig2c.png
+for scene in $SCENARIOS; do provenance_figures "$stamp" "$FIG/run_$scene.png"; done
+provenance_figures "$stamp" "$FIG/run_fig8_ensemble.png"
 echo "figures: wrote $FIG/*.png" >&2
 
 # ---------------------------------------------------------------------------
 # 4. Tables for docs/validation.md (host/reports/figures/tables.awk: criteria, verdicts).
-awk -v part=table -f "$HERE/tables.awk" "$DATA/numbers.sh" > "$DATA/table.md"
+{ printf '%s\n' "$stamp"; provenance_text "$stamp"; echo; } > "$DATA/table.md"
+awk -v part=table -f "$HERE/tables.awk" "$DATA/numbers.sh" >> "$DATA/table.md"
 awk -v part=scenarios -f "$HERE/tables.awk" "$DATA/numbers.sh" > "$DATA/scenarios.md"
 awk -v table="$DATA/table.md" -v scenarios="$DATA/scenarios.md" '
     function copy(file,    line) { while ((getline line < file) > 0) print line; close(file) }

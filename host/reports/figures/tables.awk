@@ -146,5 +146,28 @@ END {
         printf "Final states: s = %s and %s (difference %.4f), amplitude over the last 10 s %s h and %s h.\n",
             v("fig12a_s_final"), v("fig12b_s_final"), abs(v("fig12a_s_final") - v("fig12b_s_final")),
             v("fig12a_amp_last10"), v("fig12b_amp_last10")
+        ensemble_line()
     }
+}
+# fig8 from several starts 1e-5 apart (prefixes fig8_e0.., e0 the table's run): one
+# run of a chaotic scene need not be typical, so the line says what each start did
+function ensemble_line(    k, m, cycles, lo, hi, slo, shi, ok, d, same) {
+    m = n("fig8_ensemble"); lo = 1e9; hi = -1; slo = 2; shi = -1; ok = 0; cycles = ""
+    for (k = 0; k < m; ++k) {
+        d = n("fig8_e" k "_downs")
+        cycles = cycles (k ? ", " : "") d
+        if (d < lo) lo = d
+        if (d > hi) hi = d
+        ok += d >= 2
+        if (n("fig8_e" k "_s_final") < slo) slo = n("fig8_e" k "_s_final")
+        if (n("fig8_e" k "_s_final") > shi) shi = n("fig8_e" k "_s_final")
+    }
+    printf "\nfig8 from %d starts s0 = %s + k %s (k = 0..%d; docs/figures/run_fig8_ensemble.png, k = 0 is the run above): ", \
+        m, v("fig8_e0_s0"), v("fig8_ensemble_step"), m - 1
+    printf "complete cycles in %s s: %s (k = 0..%d), from %d to %d; a relaxation oscillation by the criterion (>= 2 cycles) from %d of %d starts; ", \
+        v("fig8_e0_t_end"), cycles, m - 1, lo, hi, ok, m
+    same = 0
+    for (k = 0; k < m; ++k) same += n("fig8_e" k "_downs") == n("fig8_e0_downs")
+    printf "s at the end between %.4f and %.4f. The run above completes %d; %d of the %d starts complete as many.\n", \
+        slo, shi, n("fig8_e0_downs"), same, m
 }
