@@ -14,13 +14,16 @@
 #                         seed and work corpora (llvm-cov)
 #   make robustness-asan  the test suite (test-one, double) under
 #                         AddressSanitizer + UndefinedBehaviorSanitizer
+#   make robustness-asan-smoke  the same build's CLI on the crafted inputs of
+#                         check_robustness_cli.sh, and the readers' unit tests
 #   make robustness-valgrind  the test programs and the CLI under valgrind
 #                         memcheck (test_sim: all but its two long runs)
 #   make robustness-cli   regression checks of the CLI fixes and every real field
 #                         at tiny and huge values, float and double
 #
-# `make test` runs robustness-cli, robustness-asan and fuzz-short (TEST_EXTRA);
-# `make test-long` robustness-valgrind and fuzz-minute (TEST_LONG). Knobs:
+# `make test` runs robustness-cli, robustness-asan-smoke and fuzz-short
+# (TEST_EXTRA); `make test-long` robustness-asan, robustness-valgrind and
+# fuzz-minute (TEST_LONG). Knobs:
 # FUZZ_CC (clang), ASAN_CC (gcc), FUZZ_SECONDS, FUZZ_TEST_SECONDS,
 # FUZZ_SHORT_RUNS, FUZZ_LONG_RUNS, FUZZ_JOBS.
 
@@ -121,7 +124,7 @@ fuzz_dict = $(addprefix -dict=,$(wildcard tests/fuzz/dict/$(call fuzz_seed_name,
 # the work corpus WORK, crashes to $(FUZZ_BUILD)/artifacts.
 fuzz_run = sh tests/fuzz/run_fuzz.sh $(FUZZ_BUILD)/$1 $2 $3 $(call fuzz_seeds,$1) $(FUZZ_BUILD)/artifacts $(call fuzz_dict,$1) $4
 
-.PHONY: fuzz fuzz-short fuzz-minute fuzz-long fuzz-build fuzz-coverage fuzz-deps robustness-asan robustness-valgrind \
+.PHONY: fuzz fuzz-short fuzz-minute fuzz-long fuzz-build fuzz-coverage fuzz-deps robustness-asan robustness-asan-smoke robustness-valgrind \
         robustness-deps robustness-cli
 
 fuzz-deps:
@@ -198,10 +201,23 @@ ASAN_CFLAGS := -O1 -g -fsanitize=address,undefined,float-cast-overflow -fno-sani
 ASAN_ENV := ASAN_OPTIONS=detect_leaks=1:fast_unwind_on_malloc=0:strict_string_checks=1:detect_stack_use_after_return=1 \
             UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 NM='sh $(CURDIR)/tests/fuzz/nm_sanitized.sh'
 
+ASAN_MAKE = $(MAKE) --no-print-directory BUILD=$(BUILD)/asan CC=$(ASAN_CC) CFLAGS='$(ASAN_CFLAGS)' REAL=double
 robustness-asan:
 	@echo "== robustness-asan: test-one (double) under -fsanitize=address,undefined ($(ASAN_CC))"
-	@$(ASAN_ENV) $(MAKE) --no-print-directory BUILD=$(BUILD)/asan CC=$(ASAN_CC) CFLAGS='$(ASAN_CFLAGS)' REAL=double test-one
+	@$(ASAN_ENV) $(ASAN_MAKE) test-one
 	@echo "robustness-asan: ok"
+
+# The smoke of `make test` (the whole suite under the sanitizers costs about
+# 180 CPU-s: make test-long): the instrumented CLI on the crafted inputs of the
+# regressions (exit status, message, no output, inputs unchanged, and now no
+# sanitizer report), and the unit tests of the readers and of restore.
+ASAN_SMOKE_TESTS := test_input_file test_excitation_file test_measured test_checkpoint test_out test_map test_api
+robustness-asan-smoke:
+	@echo "== robustness-asan-smoke: the CLI's crafted inputs and the readers' tests under -fsanitize=address,undefined"
+	@$(ASAN_MAKE) -j$(JOBS) $(BUILD)/asan/double/beamslider $(ASAN_SMOKE_TESTS:%=$(BUILD)/asan/double/tests/%)
+	@set -e; for t in $(ASAN_SMOKE_TESTS); do echo "== $$t (ASan)"; $(ASAN_ENV) $(BUILD)/asan/double/tests/$$t >/dev/null; done
+	@$(ASAN_ENV) sh tests/fuzz/check_robustness_cli.sh $(BUILD)/asan/double/beamslider
+	@echo "robustness-asan-smoke: ok"
 
 # ---- valgrind memcheck -----------------------------------------------------
 # The double test programs of the normal build and a few CLI runs.
@@ -244,5 +260,5 @@ robustness-cli:
 	@sh tests/fuzz/check_extreme_values.sh $(BUILD)/double/beamslider
 	@sh tests/fuzz/check_extreme_values.sh $(BUILD)/float/beamslider
 
-TEST_EXTRA += robustness-cli robustness-asan fuzz-short
-TEST_LONG += robustness-valgrind fuzz-minute
+TEST_EXTRA += robustness-cli robustness-asan-smoke fuzz-short
+TEST_LONG += robustness-asan robustness-valgrind fuzz-minute

@@ -78,7 +78,7 @@ static int steps;
 enum rule {
     RULE_SIZE_SHORT, RULE_MAGIC, RULE_BUILD, RULE_SIZE, RULE_CHECKSUM, RULE_SCENE_HASH, RULE_MODEL, RULE_STEP_MAX,
     RULE_REPORT, RULE_PERCUSSIONS, RULE_BEAM_FINITE, RULE_UNUSED_MODES, RULE_SLIDER, RULE_X_C_LOW, RULE_X_PCS,
-    RULE_BASE_ACCEL, RULE_EXCITATION, RULE_TRANSDUCER, RULE_ACCEPTED, RULES
+    RULE_BASE_ACCEL, RULE_EXCITATION, RULE_LAWS, RULE_TRANSDUCER, RULE_ACCEPTED, RULES
 };
 static const char *const rule_names[RULES] = {
     "size below the header (BS_E_CHECKPOINT_SIZE)",
@@ -98,6 +98,7 @@ static const char *const rule_names[RULES] = {
     "PCS position: finite, in [0, L] (BS_E_CHECKPOINT_SCENE)",
     "base acceleration finite (BS_E_CHECKPOINT_SCENE)",
     "excitation: bs_sim_set_excitation's rule, phase step and step amplitude (BS_E_CHECKPOINT_SCENE)",
+    "contact laws: bs_sim_set_contact_laws's rule (BS_E_CHECKPOINT_SCENE)",
     "transducer: voltages, storage, power, energy (BS_E_CHECKPOINT_SCENE)",
     "accepted (BS_OK)",
 };
@@ -106,7 +107,7 @@ static const bs_status rule_status[RULES] = {
     BS_E_CHECKPOINT_DAMAGED, BS_E_CHECKPOINT_SCENE, BS_E_CHECKPOINT_SCENE, BS_E_CHECKPOINT_SCENE,
     BS_E_CHECKPOINT_SCENE, BS_E_CHECKPOINT_SCENE, BS_E_CHECKPOINT_SCENE, BS_E_CHECKPOINT_SCENE,
     BS_E_CHECKPOINT_SCENE, BS_E_CHECKPOINT_SCENE, BS_E_CHECKPOINT_SCENE, BS_E_CHECKPOINT_SCENE,
-    BS_E_CHECKPOINT_SCENE, BS_E_CHECKPOINT_SCENE, BS_OK,
+    BS_E_CHECKPOINT_SCENE, BS_E_CHECKPOINT_SCENE, BS_E_CHECKPOINT_SCENE, BS_OK,
 };
 static unsigned long rule_count[RULES];
 
@@ -120,7 +121,8 @@ static unsigned long rule_count[RULES];
 #define AT_PHASE_STEP 60
 #define AT_REALS 68
 enum {
-    R_X_PCS = 0, R_FREQUENCY, R_AMPLITUDE, R_STEP_ACCEL, R_BASE_ACCEL, R_Q,
+    R_X_PCS = 0, R_FREQUENCY, R_AMPLITUDE, R_STEP_ACCEL, R_BASE_ACCEL, R_LAWS,
+    R_Q = R_LAWS + 2, /* the laws: mu, e_N */
     R_U = R_Q + BS_MAX_MODES,
     R_SLIDER = R_U + BS_MAX_MODES,
     R_VELOCITY = R_SLIDER + 3,
@@ -265,6 +267,9 @@ static int decide(const bs_sim *target, const unsigned char *b, size_t size, con
                 return RULE_EXCITATION;
         }
     }
+    scratch = *target;
+    if (bs_sim_set_contact_laws(&scratch, real_at(b, R_LAWS), real_at(b, R_LAWS + 1)) != BS_OK)
+        return RULE_LAWS;
 #if BS_WITH_PIEZO
     {
         bs_real p[5];
