@@ -1,7 +1,7 @@
 /* fuzz_map.c - libFuzzer target: a map folder as map-merge and map-plot
  * read it (host/lib/map/map_store.c map_identity_read and map_found_read,
- * host/lib/map/map_case.c map_row_valid, host/lib/map/map_table.c; map-plot's
- * read_table in host/cli/cli_map_plot.c is mirrored here line for line).
+ * host/lib/map/map_case.c map_row_valid, host/lib/map/map_table.c, and
+ * map-plot's reader host/lib/map/map_plot.c map_plot_read).
  *
  * Input: one flags byte, then the folder's files separated by lines "@@":
  * map-identity.txt, runs-a.csv, runs-b.csv, map.csv (a part not given: no
@@ -22,6 +22,7 @@
  */
 #define _POSIX_C_SOURCE 200809L /* open_memstream */
 
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -34,6 +35,7 @@
 #include "map_case.h"
 #include "map_store.h"
 #include "map_table.h"
+#include "map_plot.h"
 #include "outcome.h"
 
 #define PARTS 4
@@ -146,51 +148,33 @@ static void check_merge(const map_grid *grid, char *const *row)
     free(text);
 }
 
-/* map-plot's read_table (host/cli/cli_map_plot.c) on path: the cells it
- * writes are within its grid of the first two varied fields. */
-static void read_table(const char *path, const map_grid *grid)
+/* map-plot's reading of the folder's map.csv (host/lib/map/map_plot.c
+ * map_plot_read) over the first two varied fields, the others at their first
+ * value: it answers 0 or -1 with a message, and writes only the cells of its
+ * grid (ASan sees a write past them). */
+static void read_table(const char *dir, const map_grid *grid)
 {
-    char line[4096], header[MAP_POINTS_HEADER], why[256];
-    const int vx = 0, vy = grid->vary_count > 1 ? 1 : 0;
-    const long cells = grid->vary_count > 0 ? (long)grid->vary[vx].count * grid->vary[vy].count : 1;
-    long number = 0, point = 0;
-    FILE *in;
-    const char *verb;
+    char why[1024];
+    map_plot plot;
+    size_t cells, k;
+    int v;
 
-    if (input_file_open_why(path, INPUT_MAP_TABLE, &in, NULL, &verb, why, sizeof why) != 0)
+    memset(&plot, 0, sizeof plot);
+    plot.grid = grid;
+    plot.vx = 0;
+    plot.vy = grid->vary_count > 1 ? 1 : 0;
+    for (v = 0; v < MAP_MAX_VARY; ++v)
+        plot.at_index[v] = v == plot.vx || v == plot.vy ? -1 : 0;
+    cells = grid->vary_count > 0 ? (size_t)grid->vary[plot.vx].count * (size_t)grid->vary[plot.vy].count : 1;
+    plot.cells = malloc(cells * MAP_PLOT_FIGURES * sizeof *plot.cells);
+    if (!plot.cells)
         return;
-    map_table_points_header(grid, header, sizeof header);
-    while (fgets(line, sizeof line, in)) {
-        const size_t length = strlen(line);
-        map_point_figures figures;
-        ++number;
-        if (length == 0 || line[length - 1] != '\n')
-            break;
-        line[length - 1] = '\0';
-        if (number == 1) {
-            if (strcmp(line, header))
-                break;
-            continue;
-        }
-        if (point >= grid->points)
-            break;
-        why[0] = '\0';
-        if (map_table_point_parse(grid, point, line, &figures, why, sizeof why) != 0) {
-            fuzz_check_message(-1, why, sizeof why);
-            break;
-        }
-        if (figures.point != point || figures.outcome < 0 || figures.outcome >= OUTCOME_CLASSES
-            || !(figures.agreement >= 0.0 && figures.agreement <= 1.0))
-            fuzz_fail("map_table_point_parse gave figures outside what it checks");
-        ++point;
-        if (grid->vary_count > 0) {
-            const long cell = (long)map_point_value(grid, figures.point, vy) * grid->vary[vx].count
-                              + map_point_value(grid, figures.point, vx);
-            if (cell < 0 || cell >= cells)
-                fuzz_fail("map-plot's reading would write a cell outside its grid");
-        }
-    }
-    fclose(in);
+    for (k = 0; k < cells * MAP_PLOT_FIGURES; ++k)
+        plot.cells[k] = (double)NAN;
+    plot.scene = "fuzz";
+    why[0] = '\0';
+    fuzz_check_message(map_plot_read(dir, &plot, why, sizeof why), why, sizeof why);
+    free(plot.cells);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -253,7 +237,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             check_merge(&grid, found.row);
         map_found_free(&found, grid.cases);
     }
-    read_table(fuzz_path(MAP_POINTS_TABLE), &grid);
+    read_table(dir, &grid);
     map_grid_free(&grid);
     return 0;
 }
