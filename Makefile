@@ -18,6 +18,7 @@
 #   make fields       docs/fields.md: every scene field (also `beamslider fields`)
 #   make configs      regenerate the compile-time scene headers configs/*.h
 #   make test-sweeps  the contact solve's tests built with BS_WITH_SUBSPACE=0
+#   make python       the Python package in build/python/lib (docs/python.md; tests/python.mk)
 #   make bench, fig6-report, accuracy, stability, figures, embedded-report, maps
 #                     the reports of docs/ (README.md, "Reports")
 #   make clean
@@ -225,6 +226,7 @@ TEST_LONG += twin-bias-long
 include tests/consumer/consumer.mk
 include tests/buildsys/buildsys.mk
 include tests/slurm/slurm.mk
+include tests/python.mk
 
 # Builds run JOBS at a time (the prerequisites); the tests themselves in order.
 test: deps-test

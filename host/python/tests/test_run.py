@@ -1,0 +1,64 @@
+"""Runs, sweeps and maps against what the `beamslider` program prints."""
+
+import numpy
+import pytest
+
+import beamslider
+from conftest import cli_run, config
+
+# figures of the summary that are measured, not computed
+MEASURED = ("wall_s", "steps_per_s", "revision")
+
+
+@pytest.mark.parametrize("precision", ["double", "float32"])
+def test_the_fig6_60_s_run_gives_the_cli_summary_and_hash(precision):
+    bs = __import__("beamslider." + precision, fromlist=["Scene"])
+    cli = cli_run(precision, "fig6", "run.t_end=60")
+    run = bs.Scene.load(config("fig6")).run(t_end=60, every=100)
+    assert run.hash == cli["hash"]
+    mine = {key: value for key, value in run.summary.items() if key not in MEASURED}
+    assert mine == {key: value for key, value in cli.items() if key not in MEASURED}
+    # the rows: t = 0 and every 100th step, the last one the summary's
+    assert len(run.t) == run.steps // 100 + 1 == 30001
+    assert run.t[0] == 0 and run.t[-1] == pytest.approx(60, rel=1e-12)
+    assert run.s[-1] == pytest.approx(cli["s_final"], rel=1e-8)
+    assert run.s.dtype == numpy.float64 and run.contacts.dtype == numpy.uint32
+    assert numpy.all(numpy.isfinite(run.w_sensor))
+
+
+def test_a_progress_callback_hears_the_run_and_can_stop_it(bs):
+    scene = bs.Scene.load(config("fig6"), **{"run.t_end": 4})
+    heard = []
+    scene.run(progress=lambda fraction, detail: heard.append(fraction))
+    assert heard and heard == sorted(heard) and 0 <= heard[0] and heard[-1] <= 1
+
+    class Enough(Exception):
+        pass
+
+    def stop(fraction, detail):
+        if fraction > 0:
+            raise Enough()
+
+    with pytest.raises(Enough):
+        scene.run(progress=stop)
+
+
+def test_a_sweep_gives_its_points_and_the_cli_summary(bs):
+    scene = bs.Scene.load(config("fig6"))
+    sweep = scene.sweep(start=0.3, stop=0.32, step=0.01, hold=2, record=2)
+    assert len(sweep) == 3 and sweep.summary["points"] == 3
+    assert sweep.s == pytest.approx([0.3, 0.31, 0.32])
+    assert numpy.all(sweep.amp_h > 0)
+    assert sweep.summary["command"] == "sweep" and sweep.summary["precision"] == bs.precision
+
+
+def test_a_map_returns_its_tables(bs, tmp_path):
+    scene = bs.Scene.load(config("fig6"), **{"run.t_end": 0.2})
+    table = scene.map(vary={"excitation.frequency": (120, 124, 2), "excitation.acceleration": [10, 14]},
+                      repeat=1, jobs=2, dir=tmp_path / "map")
+    assert table.complete and len(table.points) == 6 and len(table.runs) == 6
+    assert list(table.axes["excitation.frequency"]) == [120, 122, 124]
+    assert table.grid("amp_h_mean").shape == (3, 2)
+    assert (tmp_path / "map" / "map.csv").exists()
+    with pytest.raises(beamslider.SceneError, match="no_such"):
+        scene.map(vary={"excitation.no_such": [1, 2]})

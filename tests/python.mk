@@ -1,0 +1,52 @@
+# tests/python.mk - the Python package beamslider (host/python, docs/python.md),
+# included by the Makefile (after port/lib.mk, whose archives it links):
+#
+#   make python        `make lib`, then the package's extension modules (cffi,
+#                      both precisions) and its Python files built into
+#                      $(BUILD)/python/lib (PYTHONPATH=$(BUILD)/python/lib to
+#                      use it): nothing is written into host/python
+#   make test-python   (part of `make test`) the pytest tests of
+#                      host/python/tests against that build and the
+#                      `beamslider` program of each precision
+#
+# With Debian's python3 and its packages only (PYTHON: the system interpreter,
+# not a python3 earlier on PATH that may lack numpy); make test installs them
+# as root, or says what to install (host/deps.sh).
+PYTHON ?= /usr/bin/python3
+PYTHON_PACKAGES := python3-cffi python3-numpy python3-pytest python3-setuptools python3-dev python3-pip \
+                   python3-matplotlib
+TEST_PACKAGES += $(PYTHON_PACKAGES)
+PYTHON_BUILD := $(abspath $(BUILD))/python
+PYTHON_LIB := $(PYTHON_BUILD)/lib
+PYTHON_SOURCES := $(wildcard host/python/*.py host/python/*.toml host/python/*.map host/python/beamslider/*)
+PYTHON_ARCHIVES := $(foreach real,double float,$(LIB_DIR)/libbeamslider-$(real).a $(LIB_DIR)/libbeamslider-host-$(real).a)
+# what the tests need of the environment: no bytecode or cache written beside
+# the sources, the repository and the programs to compare with, no display
+PYTHON_TEST_ENV := PYTHONPATH=$(PYTHON_LIB) PYTHONDONTWRITEBYTECODE=1 MPLBACKEND=Agg BEAMSLIDER_ROOT=$(CURDIR) \
+                   BEAMSLIDER_CLI_DOUBLE=$(abspath $(BUILD))/double/beamslider \
+                   BEAMSLIDER_CLI_FLOAT=$(abspath $(BUILD))/float/beamslider
+
+.PHONY: python test-python deps-python
+python: deps-python
+	@$(MAKE) --no-print-directory lib
+	@$(MAKE) --no-print-directory $(PYTHON_BUILD)/built
+
+# setuptools does not see the archives change: the stamp does, and --force
+# rebuilds the modules then (the old package removed first).
+$(PYTHON_BUILD)/built: $(PYTHON_SOURCES) $(PYTHON_ARCHIVES)
+	@rm -rf $(PYTHON_LIB)
+	cd host/python && BEAMSLIDER_BUILD=$(abspath $(BUILD)) BEAMSLIDER_NO_MAKE=1 PYTHONDONTWRITEBYTECODE=1 \
+	    $(PYTHON) setup.py -q build --force --build-base $(PYTHON_BUILD)/setuptools --build-lib $(PYTHON_LIB)
+	@touch $@
+
+test-python: python
+	@$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	@$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
+	cd $(PYTHON_BUILD) && $(PYTHON_TEST_ENV) $(PYTHON) -m pytest -q -p no:cacheprovider $(CURDIR)/host/python/tests
+
+deps-python:
+	@sh host/deps.sh $(PYTHON_PACKAGES)
+
+# ~8 CPU-s with the library and the programs built (the fig6 60 s run and the
+# program's, in each precision, are most of it); ~4 more to build the modules.
+TEST_EXTRA += test-python
