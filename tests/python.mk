@@ -7,7 +7,9 @@
 #                      use it): nothing is written into host/python
 #   make test-python   (part of `make test`) the pytest tests of
 #                      host/python/tests against that build and the
-#                      `beamslider` program of each precision
+#                      `beamslider` program of each precision, but the slow ones
+#   make test-python-long  (part of `make test-long`) the slow ones (marked
+#                      slow: the map example, the observer)
 #
 # With Debian's python3 and its packages only (PYTHON: the system interpreter,
 # not a python3 earlier on PATH that may lack numpy); make test installs them
@@ -26,9 +28,11 @@ PYTHON_TEST_ENV := PYTHONPATH=$(PYTHON_LIB) PYTHONDONTWRITEBYTECODE=1 MPLBACKEND
                    BEAMSLIDER_CLI_DOUBLE=$(abspath $(BUILD))/double/beamslider \
                    BEAMSLIDER_CLI_FLOAT=$(abspath $(BUILD))/float/beamslider
 
-.PHONY: python test-python deps-python
+.PHONY: python test-python test-python-long deps-python
+# The libraries (and, for the tests, the programs) of each precision, one
+# sub-make a precision (each costs some 0.5 CPU-s), then the package.
 python: deps-python
-	@$(MAKE) --no-print-directory lib
+	@set -e; for real in $(LIB_REALS); do $(MAKE) --no-print-directory REAL=$$real lib-one; done
 	@$(MAKE) --no-print-directory $(PYTHON_BUILD)/built
 
 # setuptools does not see the archives change: the stamp does, and --force
@@ -39,14 +43,23 @@ $(PYTHON_BUILD)/built: $(PYTHON_SOURCES) $(PYTHON_ARCHIVES)
 	    $(PYTHON) setup.py -q build --force --build-base $(PYTHON_BUILD)/setuptools --build-lib $(PYTHON_LIB)
 	@touch $@
 
-test-python: python
-	@$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
-	@$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
-	cd $(PYTHON_BUILD) && $(PYTHON_TEST_ENV) $(PYTHON) -m pytest -q -p no:cacheprovider $(CURDIR)/host/python/tests
+test-python: deps-python
+	@set -e; for real in $(LIB_REALS); do \
+	    $(MAKE) --no-print-directory REAL=$$real lib-one $(BUILD)/$$real/beamslider; done
+	@$(MAKE) --no-print-directory $(PYTHON_BUILD)/built
+	cd $(PYTHON_BUILD) && $(PYTHON_TEST_ENV) $(PYTHON) -m pytest -q -p no:cacheprovider -m "not slow" \
+	    $(CURDIR)/host/python/tests
+
+test-python-long: python
+	@set -e; for real in $(LIB_REALS); do $(MAKE) --no-print-directory REAL=$$real $(BUILD)/$$real/beamslider; done
+	cd $(PYTHON_BUILD) && $(PYTHON_TEST_ENV) $(PYTHON) -m pytest -q -p no:cacheprovider -m slow $(CURDIR)/host/python/tests
 
 deps-python:
 	@sh host/deps.sh $(PYTHON_PACKAGES)
 
-# ~8 CPU-s with the library and the programs built (the fig6 60 s run and the
-# program's, in each precision, are most of it); ~4 more to build the modules.
+# ~8 CPU-s with the libraries and the programs built (pytest ~5: the fig6 60 s
+# run and the program's in each precision; the sub-makes ~2.5); ~4 more to
+# build the modules. The tests marked slow (the map example with matplotlib,
+# the observer's design: ~4 CPU-s) are test-python-long's.
 TEST_EXTRA += test-python
+TEST_LONG += test-python-long

@@ -45,3 +45,8 @@ def bs(request):
     """The package's module of each precision in turn (beamslider.double,
     beamslider.float32)."""
     return __import__("beamslider." + request.param, fromlist=["Scene"])
+
+
+def pytest_configure(config):
+    # `make test-python` runs the tests not marked slow, `make test-python-long` the slow ones
+    config.addinivalue_line("markers", "slow: costs a CPU-second or more (make test-python-long)")
