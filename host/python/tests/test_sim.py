@@ -63,6 +63,21 @@ def test_step_measured_writes_a_row_per_step_into_the_given_buffers(bs):
         sim.step_measured(numpy.zeros((2, 2)))
 
 
+def test_a_step_the_core_refuses_raises_with_the_rows_up_to_it(bs):
+    sim = bs.Scene.load(config("fig6")).sim()
+    with pytest.raises(beamslider.RunError, match="step 3") as caught:
+        sim.step_measured([1.0, 2.0, float("nan"), 4.0])
+    assert sim.steps == 2 and len(caught.value.result) == 2 and caught.value.status
+
+
+def test_a_progress_callback_hears_the_steps_in_chunks(bs):
+    sim = bs.Scene.load(config("fig6")).sim()
+    heard = []
+    trace = sim.step(200000, every=1000, progress=lambda fraction, detail: heard.append(fraction))
+    assert len(heard) == 4 and heard[-1] == 1.0 and heard == sorted(heard)
+    assert len(trace) == 200 and sim.steps == 200000
+
+
 def test_four_threads_run_four_scenes_as_four_serial_runs(bs):
     scenes = [bs.Scene.load(config(name), **{"run.t_end": 1}) for name in ("fig6", "fig7", "fig8", "fig9")]
     serial = [scene.run().hash for scene in scenes]
