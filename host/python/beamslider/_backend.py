@@ -61,7 +61,8 @@ class Backend:
         text = "%s: %s" % (what, self.status_text(status))
         if status == lib.BS_E_ARGUMENT:
             raise ArgumentError(text)
-        if -12 <= status <= -9:  # BS_E_CHECKPOINT_*
+        if status in (lib.BS_E_CHECKPOINT_SIZE, lib.BS_E_CHECKPOINT_DAMAGED, lib.BS_E_CHECKPOINT_BUILD,
+                      lib.BS_E_CHECKPOINT_SCENE):
             raise CheckpointError(text)
         raise Error(text)
 
