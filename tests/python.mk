@@ -20,7 +20,7 @@ PYTHON_PACKAGES := python3-cffi python3-numpy python3-pytest python3-setuptools 
 TEST_PACKAGES += $(PYTHON_PACKAGES)
 PYTHON_BUILD := $(abspath $(BUILD))/python
 PYTHON_LIB := $(PYTHON_BUILD)/lib
-PYTHON_SOURCES := $(wildcard host/python/*.py host/python/*.toml host/python/*.map host/python/beamslider/*)
+PYTHON_SOURCES := $(wildcard host/python/*.py host/python/*.toml host/python/*.map $(addprefix host/python/beamslider/*.,py c h))
 PYTHON_ARCHIVES := $(foreach real,double float,$(LIB_DIR)/libbeamslider-$(real).a $(LIB_DIR)/libbeamslider-host-$(real).a)
 # what the tests need of the environment: no bytecode or cache written beside
 # the sources, the repository and the programs to compare with, no display
