@@ -30,7 +30,17 @@ class Backend:
         self.checkpoint_size = int(lib.BS_CHECKPOINT_SIZE)
         self.max_modes = int(lib.BS_MAX_MODES)
 
-        @ffi.def_extern(name="bspy_progress")
+        def missed(exception, value, traceback):
+            """An exception that came before the Hook's own try (a
+            KeyboardInterrupt is raised at the callback's first bytecode):
+            given to the Hook, whose run then stops, instead of printed and
+            lost by cffi."""
+            frame = traceback.tb_frame if traceback is not None else None
+            context = frame.f_locals.get("context") if frame is not None else None
+            if context is not None:
+                ffi.from_handle(context).fail(value)
+
+        @ffi.def_extern(name="bspy_progress", onerror=missed)
         def progress(context, fraction, detail):
             ffi.from_handle(context)(fraction, ffi.string(detail).decode() if detail != ffi.NULL else None)
 
@@ -92,8 +102,13 @@ class Hook:
             if self.callback is not None:
                 self.callback(fraction, detail)
         except BaseException as error:  # noqa: B902 - handed back to the caller, KeyboardInterrupt too
+            self.fail(error)
+
+    def fail(self, error):
+        """Keeps the first error and stops the run."""
+        if self.error is None:
             self.error = error
-            self.stop[0] = 1
+        self.stop[0] = 1
 
     def raise_error(self):
         if self.error is not None:

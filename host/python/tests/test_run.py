@@ -1,5 +1,9 @@
 """Runs, sweeps and maps against what the `beamslider` program prints."""
 
+import _thread
+import threading
+import time
+
 import numpy
 import pytest
 
@@ -41,6 +45,22 @@ def test_a_progress_callback_hears_the_run_and_can_stop_it(bs):
 
     with pytest.raises(Enough):
         scene.run(progress=stop)
+
+
+def test_ctrl_c_stops_a_run_at_its_next_progress_report():
+    """A KeyboardInterrupt arriving while the run is in C is raised by the
+    progress hook's first bytecode, outside its try: it must stop the run
+    and be raised, not be printed and lost by cffi."""
+    scene = beamslider.Scene.load(config("fig6"), **{"run.t_end": 120})
+    timer = threading.Timer(0.3, _thread.interrupt_main)
+    start = time.process_time()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            scene.run(every=100000)
+    finally:
+        timer.cancel()
+    assert time.process_time() - start < 1.0   # the whole run takes 2-4 CPU-s
 
 
 def test_a_sweep_gives_its_points_and_the_cli_summary(bs):
