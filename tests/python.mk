@@ -57,9 +57,9 @@ test-python-long: python
 deps-python:
 	@sh host/deps.sh $(PYTHON_PACKAGES)
 
-# ~8 CPU-s with the libraries and the programs built (pytest ~5: the fig6 60 s
-# run and the program's in each precision; the sub-makes ~2.5); ~4 more to
+# ~7 CPU-s with the libraries and the programs built (pytest ~5: the fig6 60 s
+# run and the program's in each precision; the sub-makes ~2); ~4 more to
 # build the modules. The tests marked slow (the map example with matplotlib,
-# the observer's design: ~4 CPU-s) are test-python-long's.
+# the observer's design: ~8 CPU-s with their make) are test-python-long's.
 TEST_EXTRA += test-python
 TEST_LONG += test-python-long
