@@ -59,9 +59,9 @@ class Map:
 
     def __init__(self, directory, fields, result, keep):
         self.dir = directory if keep else None
-        self.complete = bool(result["complete"])
         for key, value in result.items():
             setattr(self, key, value)
+        self.complete = bool(result["complete"])
         self.points = Table(directory + "/map.csv") if self.complete else None
         self.runs = Table(directory + "/runs.csv") if self.complete else None
         self.fields = list(fields)

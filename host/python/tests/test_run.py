@@ -76,7 +76,7 @@ def test_a_map_returns_its_tables(bs, tmp_path):
     scene = bs.Scene.load(config("fig6"), **{"run.t_end": 0.2})
     table = scene.map(vary={"excitation.frequency": (120, 124, 2), "excitation.acceleration": [10, 14]},
                       repeat=1, jobs=2, dir=tmp_path / "map")
-    assert table.complete and len(table.points) == 6 and len(table.runs) == 6
+    assert table.complete is True and len(table.points) == 6 and len(table.runs) == 6
     assert list(table.axes["excitation.frequency"]) == [120, 122, 124]
     assert table.grid("amp_h_mean").shape == (3, 2)
     assert (tmp_path / "map" / "map.csv").exists()
