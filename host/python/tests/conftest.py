@@ -31,6 +31,12 @@ def cli_path(precision):
     return os.environ.get("BEAMSLIDER_CLI_" + real.upper()) or os.path.join(ROOT, "build", real, "beamslider")
 
 
+def cli(precision, *args):
+    """What `beamslider ARGS...` prints on stdout."""
+    return subprocess.run([cli_path(precision)] + list(args), check=True, stdout=subprocess.PIPE,
+                          stderr=subprocess.DEVNULL, text=True).stdout
+
+
 def cli_run(precision, scene, *overrides):
     """The JSON summary `beamslider run SCENE --set ...` prints, as a dict."""
     command = [cli_path(precision), "run", config(scene)]

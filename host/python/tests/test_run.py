@@ -1,6 +1,7 @@
 """Runs, sweeps and maps against what the `beamslider` program prints."""
 
 import _thread
+import json
 import threading
 import time
 
@@ -8,7 +9,7 @@ import numpy
 import pytest
 
 import beamslider
-from conftest import cli_run, config
+from conftest import cli, cli_run, config
 
 # figures of the summary that are measured, not computed
 MEASURED = ("wall_s", "steps_per_s", "revision")
@@ -63,13 +64,30 @@ def test_ctrl_c_stops_a_run_at_its_next_progress_report():
     assert time.process_time() - start < 1.0   # the whole run takes 2-4 CPU-s
 
 
-def test_a_sweep_gives_its_points_and_the_cli_summary(bs):
-    scene = bs.Scene.load(config("fig6"))
-    sweep = scene.sweep(start=0.3, stop=0.32, step=0.01, hold=2, record=2)
-    assert len(sweep) == 3 and sweep.summary["points"] == 3
-    assert sweep.s == pytest.approx([0.3, 0.31, 0.32])
-    assert numpy.all(sweep.amp_h > 0)
-    assert sweep.summary["command"] == "sweep" and sweep.summary["precision"] == bs.precision
+@pytest.mark.parametrize("precision", ["double", "float32"])
+def test_a_sweep_gives_the_cli_points_and_summary(precision, tmp_path):
+    bs = __import__("beamslider." + precision, fromlist=["Scene"])
+    grid = ("--from", "0.3", "--to", "0.32", "--step", "0.01", "--hold", "2", "--record", "2")
+    cli_summary = json.loads(cli(precision, "sweep", config("fig6"), "--dir", "down", "--out",
+                                 str(tmp_path / "sweep.csv"), *grid))
+    cli_points = numpy.genfromtxt(tmp_path / "sweep.csv", delimiter=",", names=True)
+    sweep = bs.Scene.load(config("fig6")).sweep(direction="down", start=0.3, stop=0.32, step=0.01, hold=2,
+                                                record=2)
+    assert {k: v for k, v in sweep.summary.items() if k not in MEASURED} == \
+        {k: v for k, v in cli_summary.items() if k not in MEASURED}
+    assert len(sweep) == 3 and list(sweep.s) == pytest.approx([0.32, 0.31, 0.3])
+    for column in ("s", "amp_h", "v_mean"):  # the CSV's 7 digits
+        assert getattr(sweep, column) == pytest.approx(cli_points[column], rel=1e-6, abs=1e-12)
+
+
+def test_a_map_writes_the_tables_of_the_cli(tmp_path):
+    vary = ("excitation.frequency=120:124:2", "excitation.acceleration=10,14")
+    cli("double", "map", config("fig6"), "--set", "run.t_end=0.2", "--vary", vary[0], "--vary", vary[1],
+        "--repeat", "2", "--jobs", "2", "--out", str(tmp_path / "cli"))
+    beamslider.Scene.load(config("fig6"), **{"run.t_end": 0.2}).map(vary=list(vary), repeat=2, jobs=1,
+                                                                      dir=tmp_path / "python")
+    for table in ("map.csv", "runs.csv"):
+        assert (tmp_path / "python" / table).read_text() == (tmp_path / "cli" / table).read_text()
 
 
 def test_a_map_returns_its_tables(bs, tmp_path):
