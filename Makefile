@@ -18,6 +18,7 @@
 #   make fields       docs/fields.md: every scene field (also `beamslider fields`)
 #   make configs      regenerate the compile-time scene headers configs/*.h
 #   make test-sweeps  the contact solve's tests built with BS_WITH_SUBSPACE=0
+#   make python       the Python package in build/python/lib (docs/python.md; tests/python.mk)
 #   make bench, fig6-report, accuracy, stability, figures, embedded-report, maps
 #                     the reports of docs/ (README.md, "Reports")
 #   make docs-check   whether the reports' pages still describe the code (tests/docs.mk)
@@ -228,6 +229,7 @@ include tests/buildsys/buildsys.mk
 include tests/slurm/slurm.mk
 include tests/determinism.mk
 include tests/docs.mk
+include tests/python.mk
 
 # Builds run JOBS at a time (the prerequisites); the tests themselves in order.
 test: deps-test

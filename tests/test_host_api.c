@@ -116,6 +116,49 @@ static void test_a_run_is_the_core_loop(void **state)
     bs_host_scene_free(scene);
 }
 
+/* The summary of a run, and of a sweep, is the line `beamslider` prints: it
+ * names the scene and carries the run's hash (the bridges read it). */
+static void test_a_run_and_a_sweep_write_the_cli_summary(void **state)
+{
+    bs_host_scene *scene = load("configs/fig6.ini", short_run, 1);
+    bs_host_run_options options;
+    bs_host_run_result result;
+    bs_host_sweep_options sweep;
+    bs_host_error error;
+    char line[4096], hash[32];
+    FILE *out = tmpfile();
+    (void)state;
+    assert_non_null(out);
+    bs_host_run_defaults(&options);
+    options.summary = out;
+    assert_int_equal(bs_host_run(scene, &options, &result, &error), BS_HOST_OK);
+    rewind(out);
+    assert_non_null(fgets(line, sizeof line, out));
+    snprintf(hash, sizeof hash, "\"hash\":\"%08x\"", (unsigned)result.hash);
+    assert_non_null(strstr(line, "{\"scene\":\"fig6\",\"model\":\"free\""));
+    assert_non_null(strstr(line, hash));
+    assert_non_null(strstr(line, "\"steps\":25000,"));
+    assert_non_null(strstr(line, "\"set\":{\"run.t_end\":0.5}"));
+    assert_true(strchr(line, '\n') != NULL);
+    fclose(out);
+    out = tmpfile();
+    assert_non_null(out);
+    bs_host_sweep_defaults(&sweep);
+    sweep.from = 0.3;
+    sweep.to = 0.31;
+    sweep.step = 0.01;
+    sweep.hold = 1;
+    sweep.record = 1;
+    sweep.summary = out;
+    assert_int_equal(bs_host_sweep(scene, &sweep, NULL, &error), BS_HOST_OK);
+    rewind(out);
+    assert_non_null(fgets(line, sizeof line, out));
+    assert_non_null(strstr(line, "\"command\":\"sweep\""));
+    assert_non_null(strstr(line, "\"points\":2,"));
+    fclose(out);
+    bs_host_scene_free(scene);
+}
+
 /* on_step every N steps, and stopping a run from it */
 static int count_steps(void *context, const bs_sim *sim, uint64_t step, double t)
 {
@@ -322,6 +365,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_errors_come_back_with_the_cli_text),
         cmocka_unit_test(test_a_run_is_the_core_loop),
+        cmocka_unit_test(test_a_run_and_a_sweep_write_the_cli_summary),
         cmocka_unit_test(test_on_step_sees_and_stops_the_run),
         cmocka_unit_test(test_four_threads_compute_what_serial_runs_do),
         cmocka_unit_test(test_a_sweep_fills_its_points),

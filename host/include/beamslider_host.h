@@ -172,6 +172,8 @@ typedef struct bs_host_run_options {
     long every;                 /* on_step and CSV rows every this many steps (>= 1) */
     FILE *csv;                  /* NULL, or `beamslider run --out`'s rows */
     FILE *periods;              /* NULL, or `beamslider run --periods`' rows */
+    FILE *summary;              /* NULL, or the one-line JSON summary `beamslider run` prints (also
+                                   after a run that stopped; the Python and Octave bridges read it) */
     /* NULL, or called after the start (step 0) and every `every` steps with
      * the sim (read it with the core's functions), the step and its time
      * [s]; return nonzero to stop the run there */
@@ -224,6 +226,7 @@ typedef struct bs_host_sweep_options {
     int down;                   /* 0: from -> to; 1: to -> from */
     int hold, record;           /* excitation periods held, then recorded, per point (100, 25) */
     FILE *csv;                  /* NULL, or `beamslider sweep --out`'s rows */
+    FILE *summary;              /* NULL, or the one-line JSON summary `beamslider sweep` prints */
     bs_host_sweep_point *points; /* NULL, or room for point_room points, filled in sweep order */
     int point_room;
     bs_host_progress progress;

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "run.h"
+#include "run_summary.h"
 #include "schedule.h"
 #include "sweep.h"
 
@@ -48,6 +49,7 @@ bs_host_status bs_host_run(const bs_host_scene *scene, const bs_host_run_options
     run_result r;
     schedule excitation;
     char why[256];
+    int summary_failed;
 
     if (!scene || !options || !result)
         return api_error(error, BS_HOST_E_NULL, "a NULL scene, options or result");
@@ -74,6 +76,9 @@ bs_host_status bs_host_run(const bs_host_scene *scene, const bs_host_run_options
     copy_result(&r, result);
     if (r.out_of_memory)
         return api_error(error, BS_HOST_E_MEMORY, "out of memory for the simulation");
+    /* the summary of a run that stopped too, as `beamslider run` prints it */
+    summary_failed = options->summary
+                     && summary_print_run(options->summary, &scene->file, &scene->scene, NULL, &r) != 0;
     if (r.write_failed)
         return api_error(error, BS_HOST_E_FAILED, "a write failed: %s; the run stopped at t = %.9g s",
                          r.write_errno ? strerror(r.write_errno) : "write error", r.t);
@@ -83,6 +88,9 @@ bs_host_status bs_host_run(const bs_host_scene *scene, const bs_host_run_options
     if (r.stopped)
         return api_error(error, BS_HOST_E_FAILED, "%s: stopped by on_step at t = %.9g s (step %llu)", p->name, r.t,
                          (unsigned long long)r.steps);
+    if (summary_failed)
+        return api_error(error, BS_HOST_E_FAILED, "the summary could not be written (out of memory or a write "
+                         "error)");
     return api_ok(error);
 }
 
@@ -107,7 +115,7 @@ bs_host_status bs_host_sweep(const bs_host_scene *scene, const bs_host_sweep_opt
     const int n = bs_host_sweep_points(options);
     sweep_options o;
     sweep_result r;
-    int i;
+    int i, summary_failed;
 
     if (points_done)
         *points_done = 0;
@@ -141,6 +149,8 @@ bs_host_status bs_host_sweep(const bs_host_scene *scene, const bs_host_sweep_opt
     if (options->points && !(o.points = malloc((size_t)n * sizeof *o.points)))
         return api_error(error, BS_HOST_E_MEMORY, "out of memory for %d points", n);
     sweep_run(&scene->scene, &o, &r);
+    summary_failed = options->summary
+                     && summary_print_sweep(options->summary, &scene->file, &scene->scene, &o, &r) != 0;
     for (i = 0; o.points && i < r.points_done; ++i) {
         options->points[i].s = o.points[i].s;
         options->points[i].amp_h = o.points[i].amp_h;
@@ -155,5 +165,8 @@ bs_host_status bs_host_sweep(const bs_host_scene *scene, const bs_host_sweep_opt
     if (r.status != BS_OK)
         return api_error(error, BS_HOST_E_FAILED, "%s: sweep stopped after %d of %d points: %s",
                          scene->file.params.name, r.points_done, n, bs_status_text(r.status));
+    if (summary_failed)
+        return api_error(error, BS_HOST_E_FAILED, "the summary could not be written (out of memory or a write "
+                         "error)");
     return api_ok(error);
 }
