@@ -1,0 +1,54 @@
+/* bsmex_main.c - the entry of the MEX gateway beamslider_mex (bsmex.h).
+ *
+ *   beamslider_mex('run', SCENE, options...)      beamslider_run.m
+ *   beamslider_mex('sim', COMMAND, ...)           beamslider_sim.m
+ *   beamslider_mex('version')                     the library's version and precision
+ *
+ * The .m files beside it carry the help text users read; this file only
+ * dispatches through one table.
+ */
+#include "bsmex.h"
+
+#include <string.h>
+
+static void version(int nlhs, mxArray *plhs[], int nin, const mxArray *in[])
+{
+    static const char *const names[] = { "version", "precision", "checkpoint_bytes" };
+    mxArray *out = mxCreateStructMatrix(1, 1, 3, (const char **)names);
+    (void)nlhs;
+    (void)in;
+    if (nin != 0)
+        bsmex_fail("beamslider:usage", "usage: v = beamslider_mex('version')");
+    mxSetFieldByNumber(out, 0, 0, mxCreateString(bs_version()));
+    mxSetFieldByNumber(out, 0, 1, mxCreateString(BS_REAL_NAME));
+    mxSetFieldByNumber(out, 0, 2, mxCreateDoubleScalar((double)BS_CHECKPOINT_SIZE));
+    plhs[0] = out;
+}
+
+static const struct command {
+    const char *name;
+    void (*run)(int nlhs, mxArray *plhs[], int nin, const mxArray *in[]);
+} commands[] = {
+    { "run", bsmex_run },
+    { "sim", bsmex_sim },
+    { "version", version },
+};
+
+void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    const char *name;
+    size_t k;
+    if (nrhs < 1)
+        bsmex_fail("beamslider:usage", "usage: beamslider_mex('run' | 'sim' | 'version', ...); call "
+                                       "beamslider_run or beamslider_sim");
+    if (bs_build_check() != BS_OK)
+        bsmex_fail("beamslider:build", "beamslider_mex was compiled against the headers of another build than "
+                                       "the library it links (precision, switches, version)");
+    name = bsmex_text(prhs[0], "the command");
+    for (k = 0; k < sizeof commands / sizeof commands[0]; ++k)
+        if (strcmp(name, commands[k].name) == 0) {
+            commands[k].run(nlhs, plhs, nrhs - 1, prhs + 1);
+            return;
+        }
+    bsmex_fail("beamslider:usage", "unknown command '%s'; allowed: 'run', 'sim', 'version'", name);
+}
