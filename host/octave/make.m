@@ -8,6 +8,8 @@ function mexfile = make(varargin)
 %   make('library', WHERE)    'auto' (default): the repository's build/lib if
 %                             it is there, else pkg-config; 'build' or
 %                             'pkg-config' to insist on one
+%   make('builddir', DIR)     the repository's build folder (make BUILD=DIR;
+%                             default <repository>/build)
 %
 % The library (libbeamslider-host) comes from the repository, built there by
 % `make lib` (or `make REAL=double lib-one`), and is linked in as its archives,
@@ -18,14 +20,14 @@ function mexfile = make(varargin)
 %
 % Returns the path of the MEX file. Writes only into DIR.
 
-  opts = struct('outdir', '', 'precision', 'double', 'library', 'auto');
+  opts = struct('outdir', '', 'precision', 'double', 'library', 'auto', 'builddir', '');
   if mod(numel(varargin), 2) ~= 0
     error('beamslider:usage', 'make: options come in name/value pairs');
   end
   for k = 1:2:numel(varargin)
     name = varargin{k};
     if ~ischar(name) || ~isfield(opts, name)
-      error('beamslider:usage', 'make: unknown option; allowed: outdir, precision, library');
+      error('beamslider:usage', 'make: unknown option; allowed: outdir, precision, library, builddir');
     end
     opts.(name) = varargin{k + 1};
   end
@@ -38,8 +40,11 @@ function mexfile = make(varargin)
 
   here = fileparts(mfilename('fullpath'));
   root = fileparts(fileparts(here));
+  if isempty(opts.builddir)
+    opts.builddir = fullfile(root, 'build');
+  end
   if isempty(opts.outdir)
-    opts.outdir = fullfile(root, 'build', 'octave', opts.precision);
+    opts.outdir = fullfile(opts.builddir, 'octave', opts.precision);
   end
   if ~is_absolute(opts.outdir)
     opts.outdir = fullfile(pwd(), opts.outdir);
@@ -86,9 +91,9 @@ end
 % The compiler's include flags and the linker's arguments for the library.
 function [flags, libs] = find_library(root, opts)
   p = opts.precision;
-  lib = fullfile(root, 'build', 'lib');
+  lib = fullfile(opts.builddir, 'lib');
   archives = {fullfile(lib, ['libbeamslider-host-' p '.a']), fullfile(lib, ['libbeamslider-' p '.a'])};
-  config = fullfile(root, 'build', p, 'include');
+  config = fullfile(opts.builddir, p, 'include');
   in_build = exist(archives{1}, 'file') && exist(archives{2}, 'file') ...
              && exist(fullfile(config, 'bs_build_config.h'), 'file');
   if strcmp(opts.library, 'build') || (strcmp(opts.library, 'auto') && in_build)
