@@ -74,8 +74,10 @@ function mexfile = make(varargin)
       error('beamslider:build', 'make: mkoctfile failed:\n%s', out);
     end
   else
+    % mex takes linker options (pkg-config's -Wl,-rpath) only through LDFLAGS
+    linker = strncmp(libs, '-Wl,', 4) | strcmp(libs, '-pthread');
     mex('-outdir', opts.outdir, '-output', 'beamslider_mex', ['CFLAGS=$CFLAGS ' cflags], ...
-        flags{:}, sources{:}, libs{:});
+        ['LDFLAGS=$LDFLAGS ' sprintf('%s ', libs{linker})], flags{:}, sources{:}, libs{~linker});
   end
 end
 
