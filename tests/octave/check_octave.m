@@ -83,10 +83,31 @@ function check_octave(precision, long_hash, short_hash, short_t_end, tmp)
   failed = failed + check_error(@() beamslider_sim('step', other, 1), 'beamslider:state', ...
     {'another scene'}, 'a state whose overrides were changed (another scene than its checkpoint''s)');
 
+  % (e) an edited scene file is seen by the next call (the scene cache checks
+  % the file's bytes): the state made on the old contents is refused
+  edited = fullfile(tmp, 'edited.ini');
+  write_scene(edited, scene, 120);
+  st = beamslider_sim('init', edited);
+  st = beamslider_sim('step', st, 10);
+  write_scene(edited, scene, 121);
+  failed = failed + check_error(@() beamslider_sim('step', st, 10), 'beamslider:state', ...
+    {'another scene'}, 'a state whose scene file was edited since init');
+  write_scene(edited, scene, 120);
+  info = beamslider_sim('info', beamslider_sim('step', st, 10));
+  failed = failed + check(info.steps == 20 && info.frequency == 120, ...
+    'the same state taken again once the file says what it said');
+
   if failed > 0
     error('check_octave: %d checks failed (%s)', failed, precision);
   end
   fprintf('check_octave: all checks passed (%s)\n', precision);
+end
+
+% A scene file: fig6 (base) at frequency [Hz].
+function write_scene(path, base, frequency)
+  fid = fopen(path, 'w');
+  fprintf(fid, '[scene]\nbase = %s\n[excitation]\nfrequency = %g\n', base, frequency);
+  fclose(fid);
 end
 
 function failed = check(ok, what)

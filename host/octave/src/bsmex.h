@@ -14,14 +14,18 @@
  *   bsmex_sim.c    beamslider_sim: the stepping state as a uint8 array
  *
  * Memory: whatever lives only for one call comes from mxMalloc (MATLAB and
- * Octave free it when an error unwinds the call); a bs_host_scene is freed
- * before any error is raised.
+ * Octave free it when an error unwinds the call); what the library or the C
+ * library allocates (a bs_host_scene, a temporary file) the call hands to
+ * bsmex_hold_*, and the gateway releases it when the call returns, or at the
+ * start of the next call (or at `clear mex`) when an error unwound it: any
+ * function may raise an error at any point without leaking.
  */
 #ifndef BSMEX_H
 #define BSMEX_H
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 #include "mex.h"
 #include "beamslider_host.h"
 
@@ -34,6 +38,17 @@ void bsmex_fail(const char *id, const char *format, ...);
 /* Raises the library's error with its text, its id from its status
  * (beamslider:input, :failed, :memory, :build, :null). Never returns. */
 void bsmex_fail_host(const bs_host_error *error);
+
+/* ---- what a call holds outside mxMalloc (bsmex_main.c) ------------------------ */
+
+void bsmex_hold_scene(bs_host_scene *scene);
+void bsmex_hold_file(FILE *file);
+
+/* Frees what was held (at a call's end or start, and at exit). */
+void bsmex_release(void);
+
+/* Empties beamslider_sim's scene cache (at exit). */
+void bsmex_sim_forget(void);
 
 /* ---- arguments ------------------------------------------------------------- */
 
@@ -62,7 +77,8 @@ void bsmex_options(int count, const mxArray *const *pairs, bsmex_overrides *over
                    int every_allowed);
 
 /* Loads the scene file at path with the overrides; raises the library's
- * error (file, line, field, range) on failure. */
+ * error (file, line, field, range) on failure. The caller owns the scene
+ * (bsmex_hold_scene, or the sim's cache). */
 bs_host_scene *bsmex_scene_load(const char *path, const bsmex_overrides *overrides);
 
 /* ---- time series ----------------------------------------------------------- */

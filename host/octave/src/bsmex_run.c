@@ -20,7 +20,6 @@
 
 typedef struct run_call {
     bsmex_series series;
-    double dt;
 } run_call;
 
 static int on_step(void *context, const bs_sim *sim, uint64_t step, double t)
@@ -155,7 +154,6 @@ void bsmex_run(int nlhs, mxArray *plhs[], int nin, const mxArray *in[])
     bs_host_run_options options;
     bs_host_run_result result;
     bs_host_error error;
-    bs_host_status status;
     run_call call;
     long every = 0;
     const char *path;
@@ -168,34 +166,27 @@ void bsmex_run(int nlhs, mxArray *plhs[], int nin, const mxArray *in[])
     path = bsmex_text(in[0], "the scene file");
     bsmex_options(nin - 1, in + 1, &overrides, &every, 1);
     scene = bsmex_scene_load(path, &overrides);
+    bsmex_hold_scene(scene);
     bs_host_scene_setup(scene, &setup);
     if (every == 0) {
         const double per_ms = floor(1e-3 / setup.dt + 0.5);
         every = per_ms >= 1.0 ? (long)per_ms : 1;
     }
     periods = tmpfile();
-    if (!periods) {
-        bs_host_scene_free(scene);
+    if (!periods)
         bsmex_fail("beamslider:failed", "no temporary file for the per-period rows");
-    }
+    bsmex_hold_file(periods);
     bs_host_run_defaults(&options);
     options.every = every;
     options.on_step = on_step;
     options.on_step_context = &call;
     options.periods = periods;
-    call.dt = setup.dt;
     bsmex_series_start(&call.series, (size_t)(setup.steps / (uint64_t)every) + 1, has_transducer(scene, &setup));
-    status = bs_host_run(scene, &options, &result, &error);
-    if (status != BS_HOST_OK) {
-        fclose(periods);
-        bs_host_scene_free(scene);
+    if (bs_host_run(scene, &options, &result, &error) != BS_HOST_OK)
         bsmex_fail_host(&error);
-    }
     out = mxCreateStructMatrix(1, 1, 0, NULL);
     bsmex_series_finish(&call.series, out);
     bsmex_field(out, "periods", read_periods(periods));
     bsmex_field(out, "summary", summary(scene, &overrides, &result));
-    fclose(periods);
-    bs_host_scene_free(scene);
     plhs[0] = out;
 }

@@ -12,9 +12,9 @@
  * (bs_sim_save) and what names the scene (its file's absolute path and the
  * overrides), so it survives `clear mex`, can be saved in a .mat file and
  * copied, and two arrays are two independent sims. Each call loads the scene
- * (or finds it in a one-scene cache, keyed by path and overrides, that `clear
- * mex` empties), initialises a sim, restores the checkpoint, steps and saves
- * it into a new array; the input array is never changed. The checkpoint
+ * (or finds it in a one-scene cache, below), initialises a sim, restores the
+ * checkpoint, steps and saves it into a new array; the input array is never
+ * changed. The checkpoint
  * carries the scene's hash: a scene file edited since `init` is refused by
  * the restore, not silently taken. The solver settings are the scene's
  * [solver], set at every call (a checkpoint holds no solver options).
@@ -52,64 +52,86 @@ typedef struct sim_state {
 
 /* ---- the one-scene cache --------------------------------------------------------- */
 
-static bs_host_scene *cached_scene;
-static char *cached_key;                /* malloc'd: path, NUL, overrides with NULs */
-static size_t cached_key_size;
+/* Loading a scene costs about 10 ms (the modal precomputation), a hundred
+ * times a short step call: the last scene is kept, keyed by its path and
+ * overrides and checked against the bytes of its file at every call, so an
+ * edited scene file is read again. (A base file it names is not checked:
+ * `clear mex` after editing one.) */
+#define SCENE_FILE_MAX (1 << 20)
 
-static void cache_clear(void)
+static bs_host_scene *cached_scene;
+static char *cached_key;                /* malloc'd: path, NUL, overrides with NULs, then the file's bytes */
+static size_t cached_name_size, cached_key_size; /* of the path and overrides; of all */
+
+void bsmex_sim_forget(void)
 {
     bs_host_scene_free(cached_scene);
     free(cached_key);
     cached_scene = NULL;
     cached_key = NULL;
-    cached_key_size = 0;
+    cached_name_size = cached_key_size = 0;
 }
 
-/* The key of a scene: its path and overrides, each with its NUL. */
-static char *scene_key(const char *path, const bsmex_overrides *overrides, size_t *size)
+/* The key of a scene: its path and overrides, each with its NUL (*name_size
+ * bytes), then the contents of its file when with_file (a file that cannot
+ * be read adds nothing). with_file only for a path the library has read as
+ * a regular file (it refuses a FIFO, which fread would wait on). */
+static char *scene_key(const char *path, const bsmex_overrides *overrides, int with_file, size_t *name_size,
+                       size_t *size)
 {
-    size_t n = strlen(path) + 1, at;
+    FILE *file = with_file ? fopen(path, "rb") : NULL;
+    long file_size = 0;
+    size_t at;
     char *key;
     int i;
+
+    if (file && (fseek(file, 0, SEEK_END) != 0 || (file_size = ftell(file)) < 0 || file_size > SCENE_FILE_MAX
+                 || fseek(file, 0, SEEK_SET) != 0))
+        file_size = 0;
+    *name_size = strlen(path) + 1;
     for (i = 0; i < overrides->count; ++i)
-        n += strlen(overrides->text[i]) + 1;
-    key = mxMalloc(n);
+        *name_size += strlen(overrides->text[i]) + 1;
+    key = mxMalloc(*name_size + (size_t)file_size + 1);
     memcpy(key, path, strlen(path) + 1);
     at = strlen(path) + 1;
     for (i = 0; i < overrides->count; ++i) {
         memcpy(key + at, overrides->text[i], strlen(overrides->text[i]) + 1);
         at += strlen(overrides->text[i]) + 1;
     }
-    *size = n;
+    *size = at + (file ? fread(key + at, 1, (size_t)file_size, file) : 0);
+    if (file)
+        fclose(file);
     return key;
 }
 
-/* The scene of path and overrides: the cached one, or loaded (and cached). */
+/* The scene of path and overrides: the cached one while its file says the
+ * same, or loaded (and cached). */
 static const bs_host_scene *scene_get(const char *path, const bsmex_overrides *overrides)
 {
-    static int registered;
-    size_t size;
-    char *key = scene_key(path, overrides, &size);
+    const int known = cached_scene != NULL;
+    size_t name_size, size;
+    char *key = scene_key(path, overrides, 0, &name_size, &size);
     bs_host_scene *scene;
     char *kept;
 
-    if (cached_scene && size == cached_key_size && memcmp(key, cached_key, size) == 0)
-        return cached_scene;
+    if (known && name_size == cached_name_size && memcmp(key, cached_key, name_size) == 0) {
+        key = scene_key(path, overrides, 1, &name_size, &size);
+        if (size == cached_key_size && memcmp(key, cached_key, size) == 0)
+            return cached_scene;
+    }
+    bsmex_sim_forget();
     scene = bsmex_scene_load(path, overrides);
+    key = scene_key(path, overrides, 1, &name_size, &size);
     kept = malloc(size);
     if (!kept) {
         bs_host_scene_free(scene);
         bsmex_fail("beamslider:memory", "out of memory for the scene cache");
     }
     memcpy(kept, key, size);
-    cache_clear();
     cached_scene = scene;
     cached_key = kept;
+    cached_name_size = name_size;
     cached_key_size = size;
-    if (!registered) {
-        mexAtExit(cache_clear);
-        registered = 1;
-    }
     return cached_scene;
 }
 
