@@ -25,5 +25,10 @@ function r = beamslider_run(scene, varargin)
 % Errors: beamslider:input (the message names the file and line or the
 % override, the field, the value and the allowed range), beamslider:failed
 % (the run stopped), beamslider:usage (a bad argument). See docs/octave.md.
-  r = beamslider_mex('run', scene, varargin{:});
+  try
+    r = beamslider_mex('run', scene, varargin{:});
+  catch err
+    % Octave puts the gateway's name before the library's message
+    error(err.identifier, '%s', regexprep(err.message, '^beamslider_mex: ', ''));
+  end
 end

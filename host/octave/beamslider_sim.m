@@ -32,5 +32,10 @@ function varargout = beamslider_sim(command, varargin)
 % A scene with an [excitation] schedule is refused (beamslider_run runs
 % it). Errors as beamslider_run's, and beamslider:state for an array that
 % is not a state of this build. See docs/octave.md.
-  [varargout{1:max(nargout, 1)}] = beamslider_mex('sim', command, varargin{:});
+  try
+    [varargout{1:max(nargout, 1)}] = beamslider_mex('sim', command, varargin{:});
+  catch err
+    % Octave puts the gateway's name before the library's message
+    error(err.identifier, '%s', regexprep(err.message, '^beamslider_mex: ', ''));
+  end
 end
