@@ -11,7 +11,7 @@
 # the one `beamslider run configs/fig6.ini` prints now (not a stored value),
 # and a 2 s run at 120 Hz through 'set'; errors raised with the library's
 # message (file:line, field, range); the stepping state: n steps in one call,
-# in two halves through a .mat file and `clear mex`, and measured steps, all
+# in two halves through a .mat file and `clear beamslider_mex`, and measured steps, all
 # the same state and the CLI's hash; a damaged state or one of another scene
 # refused. Then (full pass only) every ```matlab block of docs/octave.md is
 # run in order in one session, and the output of each one followed by a

@@ -12,7 +12,8 @@ function varargout = beamslider_sim(command, varargin)
 % beamslider_run ('t_end', 's0', 'dt', 'model', 'set'), at rest, in the
 % model and at the s0 the scene gives. st is a uint8 column: the core's
 % checkpoint, the scene file's absolute path and the overrides. It holds
-% no pointer: it survives `clear mex`, saves to a .mat file, and each copy
+% no pointer: it survives `clear beamslider_mex` (or `clear mex` in MATLAB),
+% saves to a .mat file, and each copy
 % is a sim of its own. Every call rebuilds the sim from st (the scene is
 % kept between calls while it stays the same) and returns a new st; the
 % scene file must still say what it said at 'init' (its hash is checked).

@@ -17,7 +17,8 @@
  * Octave free it when an error unwinds the call); what the library or the C
  * library allocates (a bs_host_scene, a temporary file) the call hands to
  * bsmex_hold_*, and the gateway releases it when the call returns, or at the
- * start of the next call (or at `clear mex`) when an error unwound it: any
+ * start of the next call (or when the gateway is unloaded) when an error
+ * unwound it: any
  * function may raise an error at any point without leaking.
  */
 #ifndef BSMEX_H

@@ -52,7 +52,8 @@ void bsmex_release(void)
     }
 }
 
-/* At `clear mex` and when the program ends. */
+/* When the gateway is unloaded (`clear beamslider_mex`, `clear functions`,
+ * MATLAB's `clear mex`) and when the program ends. */
 static void at_exit(void)
 {
     bsmex_release();

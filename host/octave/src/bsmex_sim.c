@@ -10,7 +10,8 @@
  *
  * No pointer crosses a call: the state array holds the core's checkpoint
  * (bs_sim_save) and what names the scene (its file's absolute path and the
- * overrides), so it survives `clear mex`, can be saved in a .mat file and
+ * overrides), so it survives unloading the gateway (`clear beamslider_mex`,
+ * MATLAB's `clear mex`), can be saved in a .mat file and
  * copied, and two arrays are two independent sims. Each call loads the scene
  * (or finds it in a one-scene cache, below), initialises a sim, restores the
  * checkpoint, steps and saves it into a new array; the input array is never
@@ -56,7 +57,7 @@ typedef struct sim_state {
  * times a short step call: the last scene is kept, keyed by its path and
  * overrides and checked against the bytes of its file at every call, so an
  * edited scene file is read again. (A base file it names is not checked:
- * `clear mex` after editing one.) */
+ * `clear beamslider_mex` after editing one.) */
 #define SCENE_FILE_MAX (1 << 20)
 
 static bs_host_scene *cached_scene;
