@@ -52,8 +52,8 @@ function mexfile = make(varargin)
   if ~exist(opts.outdir, 'dir')
     mkdir(opts.outdir);
   end
-  sources = fullfile(here, 'src', {'bsmex_main.c', 'bsmex_args.c', 'bsmex_series.c', ...
-                                   'bsmex_run.c', 'bsmex_sim.c'});
+  listing = dir(fullfile(here, 'src', '*.c'));
+  sources = fullfile(here, 'src', {listing.name});
   [flags, libs] = find_library(root, opts);
   % the repository's warnings (Makefile WARNINGS); errors only where the
   % headers are known to pass them (Octave's mex.h; MATLAB's are not tested here)

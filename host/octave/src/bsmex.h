@@ -11,7 +11,9 @@
  *                  'set' overrides) and raising errors
  *   bsmex_series.c the time series of a run or of steps (one table of columns)
  *   bsmex_run.c    beamslider_run: bs_host_run, its series, periods and summary
- *   bsmex_sim.c    beamslider_sim: the stepping state as a uint8 array
+ *   bsmex_sim.c    beamslider_sim: a sim stepped from the language
+ *   bsmex_state.c  its state as a uint8 array, and the scene it names (a
+ *                  one-scene cache)
  *
  * Memory: whatever lives only for one call comes from mxMalloc (MATLAB and
  * Octave free it when an error unwinds the call); what the library or the C
@@ -47,9 +49,6 @@ void bsmex_hold_file(FILE *file);
 
 /* Frees what was held (at a call's end or start, and at exit). */
 void bsmex_release(void);
-
-/* Empties beamslider_sim's scene cache (at exit). */
-void bsmex_sim_forget(void);
 
 /* ---- arguments ------------------------------------------------------------- */
 
@@ -108,6 +107,34 @@ void bsmex_series_finish(bsmex_series *series, mxArray *out);
 
 /* Sets field name of the 1x1 struct out (added when missing) to value. */
 void bsmex_field(mxArray *out, const char *name, mxArray *value);
+
+/* ---- the stepping state (bsmex_state.c) -------------------------------------- */
+
+/* A state array read: its checkpoint (inside the array), the scene's path
+ * and overrides (mxMalloc'd). */
+typedef struct bsmex_state {
+    const unsigned char *checkpoint;
+    const char *path;
+    bsmex_overrides overrides;
+} bsmex_state;
+
+/* Reads array; raises beamslider:state for one that is not a state of this
+ * build. */
+void bsmex_state_read(const mxArray *array, bsmex_state *state);
+
+/* A new state array: sim's checkpoint, path and overrides. */
+mxArray *bsmex_state_write(const bs_sim *sim, const char *path, const bsmex_overrides *overrides);
+
+/* The scene of path and overrides: the cached one while its file holds the
+ * same bytes, or loaded (and cached; the cache owns it). */
+const bs_host_scene *bsmex_state_scene(const char *path, const bsmex_overrides *overrides);
+
+/* Empties the scene cache (at exit). */
+void bsmex_state_forget(void);
+
+/* path made absolute against the working folder, so that a later call from
+ * another folder finds the same file (mxMalloc'd). */
+char *bsmex_absolute_path(const char *path);
 
 /* ---- commands (nin arguments after the command's name) ----------------------- */
 

@@ -57,7 +57,7 @@ void bsmex_release(void)
 static void at_exit(void)
 {
     bsmex_release();
-    bsmex_sim_forget();
+    bsmex_state_forget();
 }
 
 static void version(int nlhs, mxArray *plhs[], int nin, const mxArray *in[])
