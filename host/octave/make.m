@@ -2,7 +2,7 @@ function mexfile = make(varargin)
 % MAKE  Build beamslider_mex, the MEX gateway of beamslider_run and
 % beamslider_sim, under GNU Octave (mkoctfile --mex) or MATLAB (mex).
 %
-%   make                      build into <repository>/build/octave/double
+%   make                      build into <repository>/build/octave/PRECISION
 %   make('outdir', DIR)       build into DIR
 %   make('precision', P)      'double' (default) or 'float': which library
 %   make('library', WHERE)    'auto' (default): the repository's build/lib if
@@ -12,10 +12,11 @@ function mexfile = make(varargin)
 %                             default <repository>/build)
 %
 % The library (libbeamslider-host) comes from the repository, built there by
-% `make lib` (or `make REAL=double lib-one`), and is linked in as its archives,
-% so the MEX file needs nothing at run time; or from an installed tree found
-% by pkg-config (`make install`; set PKG_CONFIG_PATH for a PREFIX such as
-% $HOME/.local), linked as the shared library with its folder as run path.
+% `make lib` (or `make REAL=double lib-one`), and is linked in as its
+% archives, so the MEX file needs no beamslider library at run time (only
+% libinih and libcjson); or from an installed tree found by pkg-config
+% (`make install`; set PKG_CONFIG_PATH for a PREFIX such as $HOME/.local),
+% linked as the shared library with its folder as run path.
 % Then:  addpath(<repository>/host/octave, DIR)   (docs/octave.md)
 %
 % Returns the path of the MEX file. Writes only into DIR.
