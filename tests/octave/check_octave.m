@@ -46,6 +46,11 @@ function check_octave(precision, long_hash, short_hash, short_t_end, tmp)
   failed = failed + check_error(@() beamslider_run(scene, 'tend', 1), 'beamslider:usage', ...
     {'unknown option ''tend''', '''t_end'''}, 'an unknown option');
 
+  failed = failed + check_error(@() beamslider_run(scene, 't_end', 0.1, 'set', {'excitation.acceleration', 1e15}), ...
+    'beamslider:failed', {'fig6: stopped at t = ', 'stability limit'}, 'a run that stops');
+  failed = failed + check_error(@() beamslider_sim('step_measured', beamslider_sim('init', scene), 1e15 * ones(1, 9)), ...
+    'beamslider:failed', {'fig6: step 2 of this call', 'stability limit'}, 'a step call that stops');
+
   % (c) the stepping state: whole against halves through a .mat file and
   % unloading the gateway, and against the CLI
   n = round(short_t_end / 2e-5);
