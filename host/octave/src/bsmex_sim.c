@@ -95,8 +95,8 @@ static void sim_advance(int nlhs, mxArray *plhs[], const mxArray *st, uint64_t s
     for (k = 1; k <= steps; ++k) {
         const bs_status status = measured ? bs_sim_step_measured(sim, (bs_real)measured[k - 1]) : bs_sim_step(sim);
         if (status != BS_OK)
-            bsmex_fail("beamslider:failed", "%s: step %.0f of this call (t = %.9g s) failed: %s", setup.name,
-                       (double)k, (double)bs_sim_time(sim), bs_status_text(status));
+            bsmex_fail("beamslider:failed", "%s: step %.0f of this call failed (at t = %.9g s): %s", setup.name,
+                       (double)k, (double)bs_sim_steps(sim) * setup.dt, bs_status_text(status));
         if (want_series && k % every == 0)
             bsmex_series_add(&series, sim, (double)bs_sim_steps(sim) * setup.dt);
     }
