@@ -15,6 +15,8 @@
 #                     their headers, pkg-config files (beamslider-host-double, -float,
 #                     beamslider-double, -float), the CMake package beamslider, the
 #                     beamslider program, the scenes and the licence (make uninstall)
+#   make octave       the Octave/MATLAB gateway in build/octave/ (host/octave, docs/octave.md;
+#                     tests/octave.mk: make test-octave, part of make test)
 #   make fields       docs/fields.md: every scene field (also `beamslider fields`)
 #   make configs      regenerate the compile-time scene headers configs/*.h
 #   make test-sweeps  the contact solve's tests built with BS_WITH_SUBSPACE=0
@@ -226,6 +228,7 @@ TEST_LONG += twin-bias-long
 -include host/reports/reports.mk tests/reference/reference.mk tests/robustness.mk
 include tests/consumer/consumer.mk
 include tests/buildsys/buildsys.mk
+include tests/octave.mk
 include tests/slurm/slurm.mk
 include tests/determinism.mk
 include tests/docs.mk
