@@ -185,16 +185,27 @@ run:
 	$(BUILD)/beamslider run configs/fig6.ini --out $(BUILD)/fig6.csv --every 20
 endif
 
-# Every test in this REAL, then the core symbol check.
+# Every test in this REAL, then the core symbol check. The CLI's checks of
+# outputs, inputs and maps test the host (which computes in double whatever
+# the core's precision): `make test` runs them on the double program, `make
+# test-long` on the float one too (cli-float-long).
 test-one: $(TEST_BIN) $(OBJ)/beamslider $(TWIN_PACK) step-diff-test
 	@set -e; for t in $(TEST_BIN); do echo "== $$t"; ./$$t; done
 	@sh tests/check_core_symbols.sh $(REAL) $(CORE_OBJ)
 	@sh tests/check_core_includes.sh
 	@sh tests/check_cli.sh $(OBJ)/beamslider
+	@sh tests/check_configs.sh $(OBJ)/beamslider
+	$(if $(filter double,$(REAL)),@$(MAKE) --no-print-directory cli-checks)
+
+cli-checks: $(OBJ)/beamslider $(TWIN_PACK)
 	@sh tests/check_outputs.sh $(OBJ)/beamslider
 	@sh tests/check_inputs.sh $(OBJ)/beamslider $(TWIN_PACK)
-	@sh tests/check_configs.sh $(OBJ)/beamslider
 	@sh tests/check_map.sh $(OBJ)/beamslider
+
+cli-float-long:
+	@$(MAKE) --no-print-directory -j$(JOBS) REAL=float cli-checks
+.PHONY: cli-checks cli-float-long
+TEST_LONG += cli-float-long
 
 # The contact solve built without its subspace step (BS_WITH_SUBSPACE=0, the
 # real-time option of docs/porting.md): its unit tests in both precisions

@@ -5,8 +5,8 @@
 #                         corpus kept in $(BUILD)/fuzz/corpus; prints executions
 #                         and coverage per target
 #   make fuzz-short       a smoke run of every target: its seed corpus, then up
-#                         to FUZZ_SHORT_RUNS (2000) executions or
-#                         FUZZ_TEST_SECONDS (2), FUZZ_JOBS (2) targets at a time
+#                         to FUZZ_SHORT_RUNS (300) executions or
+#                         FUZZ_TEST_SECONDS (1), FUZZ_JOBS (2) targets at a time
 #   make fuzz-minute      every target for FUZZ_SECONDS (60), FUZZ_JOBS at a time
 #   make fuzz-long        every target for FUZZ_LONG_RUNS (1000000) executions,
 #                         FUZZ_JOBS at a time, under nice (not in CI: hours)
@@ -18,8 +18,9 @@
 #                         check_robustness_cli.sh, and the readers' unit tests
 #   make robustness-valgrind  the test programs and the CLI under valgrind
 #                         memcheck (test_sim: all but its two long runs)
-#   make robustness-cli   regression checks of the CLI fixes and every real field
-#                         at tiny and huge values, float and double
+#   make robustness-cli   regression checks of the CLI fixes (float and double)
+#                         and every real field at tiny and huge values (double;
+#                         robustness-cli-float: float, in make test-long)
 #
 # `make test` runs robustness-cli, robustness-asan-smoke and fuzz-short
 # (TEST_EXTRA); `make test-long` robustness-asan, robustness-valgrind and
@@ -30,8 +31,8 @@
 FUZZ_CC ?= clang
 ASAN_CC ?= gcc
 FUZZ_SECONDS ?= 60
-FUZZ_TEST_SECONDS ?= 2
-FUZZ_SHORT_RUNS ?= 2000
+FUZZ_TEST_SECONDS ?= 1
+FUZZ_SHORT_RUNS ?= 300
 FUZZ_LONG_RUNS ?= 1000000
 FUZZ_JOBS ?= 2
 FUZZ_BUILD := $(BUILD)/fuzz
@@ -125,7 +126,7 @@ fuzz_dict = $(addprefix -dict=,$(wildcard tests/fuzz/dict/$(call fuzz_seed_name,
 fuzz_run = sh tests/fuzz/run_fuzz.sh $(FUZZ_BUILD)/$1 $2 $3 $(call fuzz_seeds,$1) $(FUZZ_BUILD)/artifacts $(call fuzz_dict,$1) $4
 
 .PHONY: fuzz fuzz-short fuzz-minute fuzz-long fuzz-build fuzz-coverage fuzz-deps robustness-asan robustness-asan-smoke robustness-valgrind \
-        robustness-deps robustness-cli
+        robustness-deps robustness-cli robustness-cli-float
 
 fuzz-deps:
 	@sh host/deps.sh $(FUZZ_PACKAGES)
@@ -258,7 +259,13 @@ robustness-cli:
 	@sh tests/fuzz/check_robustness_cli.sh $(BUILD)/double/beamslider
 	@sh tests/fuzz/check_robustness_cli.sh $(BUILD)/float/beamslider
 	@sh tests/fuzz/check_extreme_values.sh $(BUILD)/double/beamslider
+
+# Every real field at tiny and huge values in float too (`make test-long`:
+# about 10 CPU-s of process start-ups; the refusals are the host's, in double
+# whatever the core's precision)
+robustness-cli-float:
+	@$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
 	@sh tests/fuzz/check_extreme_values.sh $(BUILD)/float/beamslider
 
 TEST_EXTRA += robustness-cli robustness-asan-smoke fuzz-short
-TEST_LONG += robustness-asan robustness-valgrind fuzz-minute
+TEST_LONG += robustness-asan robustness-cli-float robustness-valgrind fuzz-minute

@@ -1,7 +1,7 @@
 # tests/consumer/consumer.mk - beamslider taken as a library, included by the
 # Makefile (after port/lib.mk and tests/embedded/embedded.mk):
 #
-#   make consumer-test   (part of `make test`) a fresh `make install` into
+#   make consumer-test   (part of `make test-long`: about 30 CPU-s) a fresh `make install` into
 #                        $(BUILD)/stage, then tests/check_consumer.sh: the
 #                        programs of tests/consumer/ built against it with
 #                        pkg-config (C and C++), with CMake (add_subdirectory
@@ -25,4 +25,4 @@ consumer-test: deps-test
 	$(if $(CONSUMER_CM_LIB),@$(MAKE) --no-print-directory -s TARGET=cortex-m4f SCENE=fig6_1mode REAL=float lib >/dev/null)
 	@sh tests/check_consumer.sh $(CONSUMER_STAGE) $(abspath $(BUILD)) $(CONSUMER_SCENE_LIB) $(CONSUMER_CM_LIB)
 
-TEST_EXTRA += consumer-test
+TEST_LONG += consumer-test

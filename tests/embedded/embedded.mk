@@ -3,10 +3,11 @@
 # CORE_SRC, BASE_CFLAGS).
 #
 #   make embedded-test     every image of EMB_CHECKS under QEMU against its host
-#                          twin, bit for bit (part of `make test`), the QEMU
-#                          harness self-test and the core symbol check of each image
-#                          (embedded-more: the same for EMB_MORE_CHECKS, and
-#                          embedded-long the whole runs, in `make test-long`)
+#                          twin, bit for bit (part of `make test`), the twin
+#                          firmware, and the core symbol check of each image
+#                          (embedded-more: the same for EMB_MORE_CHECKS and the
+#                          QEMU harness self-test, embedded-long the whole runs,
+#                          in `make test-long`)
 #   make embedded-report   flash, RAM, stack, instructions and estimated cycles
 #                          per step, backlog of whole runs -> docs/embedded.md
 #                          (and make twin-firmware-report: the twin firmware, tests/embedded/twin.mk)
@@ -40,11 +41,10 @@ emb_image = $(eval $(call emb__image,$(strip $1),$(strip $2),$(strip $3),$(strip
 EMB_SRC := tests/embedded/scene_run.c $(CORE_SRC)
 # TARGET:SCENE:REAL:STEPS run in `make test` (soft-float targets: fewer steps): the
 # twin's board in both scenes and a core without FPU ...
-EMB_CHECKS := cortex-m4f:fig6:float:20000 cortex-m4f:fig6_1mode:float:20000 \
-              cortex-m0plus:fig6_1mode:float:2000
-# ... and in `make test-long` the other boards and switches (fig6_frictionless: the
-# core compiled without friction, a switch no other image turns off)
-EMB_MORE_CHECKS := cortex-m4f:fig6_frictionless:float:20000 \
+EMB_CHECKS := cortex-m4f:fig6:float:20000 cortex-m0plus:fig6_1mode:float:2000
+# ... and in `make test-long` the other boards, scenes and switches (fig6_frictionless:
+# the core compiled without friction, a switch no other image turns off)
+EMB_MORE_CHECKS := cortex-m4f:fig6_1mode:float:20000 cortex-m4f:fig6_frictionless:float:20000 \
                    cortex-m7:fig6:double:20000 cortex-m7:fig6_1mode:float:20000 \
                    cortex-m3:fig6_1mode:float:2000
 # ... and in `make test-long`, the scenes' whole runs (t_end / dt steps)
@@ -159,7 +159,6 @@ include tests/embedded/twin.mk
 embedded-test: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_CHECK_PAIRS),$(call emb_word,$p,2) $(call emb_word,$p,3)) $(TWIN_TEST_DEPS))
 	$(if $(CM_TOOLS_OK),@sh tests/check_embedded.sh $(EMB_CHECK_PAIRS),@echo "$(CM_TOOLS_MSG)")
 	$(if $(CM_TOOLS_OK),@$(MAKE) --no-print-directory twin-firmware-test)
-	$(if $(CM_TOOLS_OK),@CM_BUILD=$(CM_BUILD) sh tests/qemu/selftest.sh)
 	$(if $(CM_TOOLS_OK),@set -e; $(foreach c,$(EMB_CHECKS),NM=arm-none-eabi-nm sh tests/check_core_symbols.sh \
 	    $(call emb_word,$c,3) $(CM_BUILD)/$(call emb_word,$c,1)/check-$(call emb_word,$c,2)-$(call emb_word,$c,3).obj/core/src/*.o;))
 
@@ -167,6 +166,7 @@ embedded-test: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_CHECK_PAIRS),$(call emb_wor
 # (`make test-long`).
 embedded-more: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_MORE_PAIRS),$(call emb_word,$p,2) $(call emb_word,$p,3)))
 	$(if $(CM_TOOLS_OK),@sh tests/check_embedded.sh $(EMB_MORE_PAIRS),@echo "$(CM_TOOLS_MSG)")
+	$(if $(CM_TOOLS_OK),@CM_BUILD=$(CM_BUILD) sh tests/qemu/selftest.sh)
 	$(if $(CM_TOOLS_OK),@set -e; $(foreach c,$(EMB_MORE_CHECKS),NM=arm-none-eabi-nm sh tests/check_core_symbols.sh \
 	    $(call emb_word,$c,3) $(CM_BUILD)/$(call emb_word,$c,1)/check-$(call emb_word,$c,2)-$(call emb_word,$c,3).obj/core/src/*.o;))
 TEST_LONG += embedded-more
