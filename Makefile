@@ -2,7 +2,7 @@
 #
 #   make              build build/beamslider (REAL precision)
 #   make run          build and run the fig6 scene (60 s), print its summary
-#   make test         build and run the tests, float and double (under two minutes)
+#   make test         build and run the tests, float and double (150 CPU-s with the build done)
 #   make test-long    the slow checks: valgrind, minute-long fuzzing, whole runs under QEMU,
 #                     a sharded map on a private single-node Slurm (as root; tests/slurm/), the
 #                     observer's measured s on its own 60 s plant (twin-bias-long)
@@ -242,8 +242,8 @@ include tests/buildsys/buildsys.mk
 include tests/octave.mk
 include tests/slurm/slurm.mk
 include tests/determinism.mk
-include tests/docs.mk
 include tests/python.mk
+include tests/docs.mk
 
 # Builds run JOBS at a time (the prerequisites); the tests themselves in order.
 test: deps-test

@@ -57,6 +57,14 @@ test-python-long: python
 deps-python:
 	@sh host/deps.sh $(PYTHON_PACKAGES)
 
+# docs/figures/python_map.png, drawn by the map example (docs/python.md), and
+# its line in docs/figures/PROVENANCE (host/reports/provenance.sh)
+python-figure: python provenance-builds
+	PYTHONPATH=$(PYTHON_LIB) PYTHONDONTWRITEBYTECODE=1 MPLBACKEND=Agg $(PYTHON) host/python/examples/map_example.py \
+	    --out docs/figures/python_map.png --jobs $(JOBS) --dir $(PYTHON_BUILD)/map_example
+	@sh -c '. host/reports/provenance.sh && provenance_figures "$$(provenance_stamp "make python-figure")" docs/figures/python_map.png'
+.PHONY: python-figure
+
 # ~7 CPU-s with the libraries and the programs built (pytest ~5: the fig6 60 s
 # run and the program's in each precision; the sub-makes ~2); ~4 more to
 # build the modules. The tests marked slow (the map example with matplotlib,

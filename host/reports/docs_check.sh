@@ -50,7 +50,8 @@ run_*.png|make figures
 map_*.png|make maps
 harvester_*.png|make harvester-report
 twin_*.png|make twin-report
-work_precision.png|make accuracy'
+work_precision.png|make accuracy
+python_map.png|make python-figure'
 
 TMP=$(mktemp -d) || exit 1
 trap 'rm -rf "$TMP"' EXIT

@@ -66,6 +66,7 @@ stability:
 bench:
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
 	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
+	$(MAKE) --no-print-directory python
 	$(if $(BENCH_BASELINE),BENCH_BASELINE=$(BENCH_BASELINE)) sh host/reports/bench.sh
 
 harvester-report: deps-figures
