@@ -16,7 +16,10 @@
  *      how the beam responds: the measured signal is demodulated against a_k
  *      (a lock-in), and the response magnitude |H| is located on a map of
  *      the scene's own response against s (host-made, both branches); a
- *      slow, rate-limited integral action moves x_C toward it.
+ *      slow, rate-limited integral action moves x_C toward it;
+ *   3. optionally (friction_gain > 0) estimates the plant's Coulomb friction
+ *      from the persistent part of that s error on the high branch and sets
+ *      it on the twin (bs_sim_set_contact_laws; docs/twin.md, "Friction").
  *
  * Like bs_sim, a bs_observer is a caller-owned struct of compile-time size
  * (`static bs_observer obs;`) whose members are private; read it through
