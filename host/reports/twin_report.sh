@@ -422,9 +422,9 @@ for name in fig6 fig8; do
     done > "$TMP/mu_$name.dat"
 done
 set -- $(sort -k9 -g "$TMP"/fig6_*.draw | tail -n 1)
-seed_hi=$1 mu_hi=$9
+seed_hi=$1 mu_hi=$(printf %.3f "$9")
 set -- $(sort -k9 -g "$TMP"/fig6_*.draw | head -n 1)
-seed_lo=$1 mu_lo=$9
+seed_lo=$1 mu_lo=$(printf %.3f "$9")
 for which in hi lo; do
     [ "$which" = hi ] && seed=$seed_hi || seed=$seed_lo
     awk -F, 'FNR > 1 && FNR % 10 == 0 { print $1, $8, $2 }' "$TMP/fig6_$seed.mu" > "$TMP/f_mu_$which.dat"
@@ -523,9 +523,9 @@ within 5 % in 97 % of the windows without a jump.
 
 ![fig8: s and amplitude of plant and twins](figures/twin_fig8.png)
 
-![the friction estimate against time on every fig6 and fig8 plant, and s on the fig6 plants with the most and the least friction](figures/twin_friction.png)
-
 ![fig6_shift, the first 100 s (124 Hz falling to 110 Hz from 60 s to 80 s): s and amplitude](figures/twin_shift.png)
+
+![the friction estimate against time on every fig6 and fig8 plant, and s on the fig6 plants with the most and the least friction](figures/twin_friction.png)
 EOF
 if grep -q '^<!-- twin-report -->$' "$OUT" 2>/dev/null; then
     awk -v report="$TMP/report.md" '
