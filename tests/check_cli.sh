@@ -381,6 +381,18 @@ check_status "twin-plant of 0.05 s exits 0" 0 $? "$tmp/e"
 check_status "twin on a stream shorter than --score-after exits 0" 0 $? "$tmp/e"
 check_has "its summary has within null and scored 0" "$tmp/o" '"scored":0,"within":null'
 check_has "and stderr says why" "$tmp/e" "no row was scored (within and rms_s_error are null): the stream ends at t = 0.05 s, before --score-after 5 s"
+# ---- twin: --friction and --restitution set the running twin's contact laws
+# (bs_sim_set_contact_laws; the twin report's ceiling), out-of-range values refused
+"$bin" twin configs/fig6.ini --measured "$tmp/short.csv" --out "$tmp/laws_est.csv" --map-frequencies 2000 \
+    --noise 1e-6 --friction 0.25 --restitution 0.4 >"$tmp/o" 2>"$tmp/e"
+check_status "twin --friction 0.25 --restitution 0.4 exits 0" 0 $? "$tmp/e"
+check_has "... and its summary reports mu 0.25" "$tmp/o" '"mu_final":0.25,'
+check_has "... as its estimates' mu column does" "$tmp/laws_est.csv" ',0.25,0'
+for bad in "--friction -0.1" "--restitution 1.5" "--estimate-friction -1"; do
+    "$bin" twin configs/fig6.ini --measured "$tmp/short.csv" --out "$tmp/bad_est.csv" $bad >"$tmp/o" 2>"$tmp/e"
+    check_status "twin $bad exits 2" 2 $? "$tmp/e"
+    check_has "... naming the option and its range" "$tmp/e" "${bad%% *} ${bad#* }: allowed: a number in"
+done
 
 # ---- help: each command's own, and the top-level usage lists every option
 "$bin" --help >"$tmp/usage" 2>"$tmp/e"

@@ -16,7 +16,10 @@
  *      how the beam responds: the measured signal is demodulated against a_k
  *      (a lock-in), and the response magnitude |H| is located on a map of
  *      the scene's own response against s (host-made, both branches); a
- *      slow, rate-limited integral action moves x_C toward it.
+ *      slow, rate-limited integral action moves x_C toward it;
+ *   3. optionally (friction_gain > 0) estimates the plant's Coulomb friction
+ *      from the persistent part of that s error on the high branch and sets
+ *      it on the twin (bs_sim_set_contact_laws; docs/twin.md, "Friction").
  *
  * Like bs_sim, a bs_observer is a caller-owned struct of compile-time size
  * (`static bs_observer obs;`) whose members are private; read it through
@@ -108,6 +111,14 @@ typedef struct bs_observer_options {
     bs_real outlier_gate;    /* a measurement whose innovation exceeds outlier_gate times the
                                 innovation's running RMS is skipped as an outlier (counted;
                                 the step goes on as without a measurement), > 1 */
+    bs_real friction_gain;   /* the friction estimate (docs/twin.md, "Friction"): relative change
+                                of mu per second per unit of persistent s error beyond
+                                friction_deadband [1/s], >= 0; 0: mu is not estimated (the sim's
+                                stays as set) */
+    bs_real friction_time;   /* time constant of the persistent part of the s error [s], > 0 */
+    bs_real friction_deadband; /* persistent s errors up to this leave mu alone [1], >= 0 */
+    bs_real friction_sigma;  /* mu is learnt only while s_sigma is below this (the high branch,
+                                where s is measured) [1], > 0 */
 } bs_observer_options;
 
 /* Defaults (tuned on fig6, docs/twin.md): both corrections, lock-in 0.1 s,
@@ -122,6 +133,13 @@ typedef struct bs_observer_options {
 #define BS_OBSERVER_DEFAULT_SIGMA_HOLD 0.02
 #define BS_OBSERVER_DEFAULT_SETTLE_TIME 0.5
 #define BS_OBSERVER_DEFAULT_OUTLIER_GATE 6.0
+#define BS_OBSERVER_DEFAULT_FRICTION_GAIN 0.0
+#define BS_OBSERVER_DEFAULT_FRICTION_TIME 1.0
+#define BS_OBSERVER_DEFAULT_FRICTION_DEADBAND 0.001
+#define BS_OBSERVER_DEFAULT_FRICTION_SIGMA 0.002
+/* The friction estimate stays within [1 - range, 1 + range] times the
+ * scene's mu (twice the +-25 % a plant is drawn with in the twin report). */
+#define BS_OBSERVER_FRICTION_RANGE 0.5
 
 /* bs_observer_estimate.health: bits. */
 #define BS_OBSERVER_HEALTH_OUTLIERS 1 /* a measurement was skipped as an outlier within the last
@@ -143,6 +161,9 @@ typedef struct bs_observer_estimate {
     bs_real innovation_rms; /* the running RMS of e the outlier gate compares with */
     uint32_t outliers;      /* measurements skipped as outliers since bs_observer_init */
     int health;             /* 0, or BS_OBSERVER_HEALTH_* bits */
+    bs_real mu;             /* the twin's Coulomb friction: the estimate mu^ while friction_gain > 0 */
+    bs_real mu_sigma;       /* standard deviation of mu^ (docs/twin.md, "Friction"); 0 when mu is
+                               not estimated */
 } bs_observer_estimate;
 
 /* PRIVATE members (core/src/bs_observer.c). */
@@ -166,6 +187,8 @@ typedef struct bs_observer {
     bs_shape_cache shape;                             /* the mode shapes expanded about the slider */
     bs_lowpass2 power;                                /* <p> */
     bs_lowpass2 s_error_mean, s_error_sq;             /* of the raw s error */
+    bs_real friction_persist;                         /* the s error low-passed over friction_time */
+    bs_real friction_learnt;                          /* time spent learning mu [s] */
     bs_observer_estimate estimate;
 } bs_observer;
 
@@ -230,6 +253,22 @@ bs_status bs_observer_predict(bs_observer *obs, bs_sim *sim, bs_real base_accel)
 /* Copies the latest estimate into *estimate. Returns BS_OK, BS_E_NULL or
  * BS_E_UNINITIALISED. */
 bs_status bs_observer_get(const bs_observer *obs, bs_observer_estimate *estimate);
+
+/* The friction estimate mu^ [1] and its standard deviation (mu_sigma may be
+ * NULL). mu^ is the twin sim's friction (bs_sim_get_contact_laws): a
+ * checkpoint of the sim (bs_sim_save) holds it, and bs_sim_restore checks
+ * it. Returns BS_OK, BS_E_NULL or BS_E_UNINITIALISED. */
+bs_status bs_observer_get_friction(const bs_observer *obs, bs_real *mu, bs_real *mu_sigma);
+
+/* Resumes the friction estimate where a saved one left off (after
+ * bs_sim_restore and bs_observer_init): mu^ within [1 - range, 1 + range]
+ * times the scene's mu (BS_OBSERVER_FRICTION_RANGE), and mu_sigma in
+ * (0, the prior's] (the prior: uniform over that range) are checked; mu^
+ * goes to the sim (bs_sim_set_contact_laws, e_N kept) and the learning time
+ * that mu_sigma stands for to the observer. Returns BS_OK, BS_E_NULL,
+ * BS_E_UNINITIALISED or BS_E_ARGUMENT (another sim, a value out of range:
+ * nothing changes). */
+bs_status bs_observer_set_friction(bs_observer *obs, bs_sim *sim, bs_real mu, bs_real mu_sigma);
 
 #ifdef __cplusplus
 }

@@ -75,6 +75,24 @@
  *    signal (a branch jump) widens the gate by ~7 % a sample (with the
  *    default gate of 6) and is followed within a millisecond, while one
  *    glitch widens it by that once.
+ * 8. Friction (docs/twin.md, "Friction"). A twin whose mu is off drifts
+ *    along the high branch at another speed than the plant, and settles on
+ *    another plateau, so the s correction (5) has a persistent part there:
+ *    measured on fig6, a plant with 25 % more friction walks toward the
+ *    centre more slowly and settles lower, and the s error reads about
+ *    -0.0027 for as long as it lasts, 25 % less friction about +0.002, the
+ *    nominal plant +0.0005. With friction_gain > 0, while s is measured
+ *    (s_sigma below friction_sigma: the high branch; on the low branch |H|
+ *    hardly depends on s and the s error carries no friction), the s error
+ *    is low-passed over friction_time, and what of it is beyond
+ *    friction_deadband moves mu:
+ *      dmu/dt = -friction_gain mu_scene (persist -+ friction_deadband),
+ *    within (1 +- BS_OBSERVER_FRICTION_RANGE) mu_scene, set on the sim by
+ *    bs_sim_set_contact_laws. The deadband keeps the nominal plant's own
+ *    +0.0005 and the noise from moving it. mu_sigma: a uniform prior over
+ *    the range shrunk by the time spent learning, plus what the persistent
+ *    error left says (FRICTION_SENSITIVITY, fig6's s error per unit of
+ *    relative friction error); a figure of merit, not a posterior.
  * A step without a measurement (bs_observer_predict: a sample lost on the
  * way, e.g. a firmware's FIFO overrun) does all but what needs y: no beam
  * correction (3), and of the lock-in (4) only the reference and the twin's
@@ -97,6 +115,11 @@
 #define POSITION_EVERY 16
 /* Weight of the newest sample in the running mean of e^2 (7). */
 #define GATE_MEMORY BS_R(0.00390625) /* 1/256 */
+/* 8: the learning time over which the prior's variance halves [s], and the
+ * persistent s error per unit of relative friction error (fig6). */
+#define FRICTION_LEARN_REF BS_R(2.0)
+#define FRICTION_SENSITIVITY BS_R(0.01)
+#define INV_SQRT3 BS_R(0.5773502691896258)
 
 typedef struct complex_real {
     bs_real re, im;
@@ -115,6 +138,10 @@ bs_observer_options bs_observer_defaults(void)
     o.excitation_tolerance = (bs_real)BS_OBSERVER_DEFAULT_EXCITATION_TOLERANCE;
     o.settle_time = (bs_real)BS_OBSERVER_DEFAULT_SETTLE_TIME;
     o.outlier_gate = (bs_real)BS_OBSERVER_DEFAULT_OUTLIER_GATE;
+    o.friction_gain = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_GAIN;
+    o.friction_time = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_TIME;
+    o.friction_deadband = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_DEADBAND;
+    o.friction_sigma = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_SIGMA;
     return o;
 }
 
@@ -132,7 +159,9 @@ static int valid_options(const bs_observer_options *o)
            && finite(o->sigma_hold) && o->sigma_hold > BS_R(0.0) && finite(o->excitation_tolerance)
            && o->excitation_tolerance > BS_R(0.0) && finite(o->settle_time)
            && o->settle_time >= BS_R(0.0) && finite(o->outlier_gate) && o->outlier_gate > BS_R(1.0)
-           && finite(o->outlier_gate * o->outlier_gate);
+           && finite(o->outlier_gate * o->outlier_gate) && finite(o->friction_gain) && o->friction_gain >= BS_R(0.0)
+           && finite(o->friction_time) && o->friction_time > BS_R(0.0) && finite(o->friction_deadband)
+           && o->friction_deadband >= BS_R(0.0) && finite(o->friction_sigma) && o->friction_sigma > BS_R(0.0);
 }
 
 /* The maps: s ascending within (0, 1/2], everything finite (|H| < 0: no
@@ -215,6 +244,28 @@ static bs_real twin_power(const bs_sim *sim)
 #endif
 }
 
+/* 8: the prior's standard deviation of mu (uniform over the range). */
+static bs_real friction_prior(const bs_observer *obs)
+{
+    return (bs_real)BS_OBSERVER_FRICTION_RANGE * INV_SQRT3 * obs->sim->scene->mu;
+}
+
+/* The persistent s error beyond the deadband (0 within it). */
+static bs_real friction_drive(const bs_observer *obs)
+{
+    const bs_real band = obs->options.friction_deadband, p = obs->friction_persist;
+    return p > band ? p - band : p < -band ? p + band : BS_R(0.0);
+}
+
+static bs_real friction_sigma(const bs_observer *obs)
+{
+    const bs_real prior = friction_prior(obs);
+    const bs_real left = obs->sim->scene->mu * friction_drive(obs) / FRICTION_SENSITIVITY;
+    if (!(obs->options.friction_gain > BS_R(0.0)))
+        return BS_R(0.0);
+    return bs_sqrt(prior * prior / (BS_R(1.0) + obs->friction_learnt / FRICTION_LEARN_REF) + left * left);
+}
+
 bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer_size, size_t gains_size,
                             bs_observer *obs, const bs_sim *sim, const bs_observer_gains *gains,
                             const bs_observer_options *options)
@@ -252,6 +303,12 @@ bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer
     obs->options.excitation_tolerance = options->excitation_tolerance;
     obs->options.settle_time = options->settle_time;
     obs->options.outlier_gate = options->outlier_gate;
+    obs->options.friction_gain = options->friction_gain;
+    obs->options.friction_time = options->friction_time;
+    obs->options.friction_deadband = options->friction_deadband;
+    obs->options.friction_sigma = options->friction_sigma;
+    obs->friction_persist = BS_R(0.0);
+    obs->friction_learnt = BS_R(0.0);
     obs->steps = 0;
     obs->head = 0;
     for (i = 0; i <= BS_OBSERVER_MAX_LATENCY; ++i) {
@@ -283,7 +340,10 @@ bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer
     obs->estimate.prediction = obs->past_signal[0];
     obs->estimate.innovation = BS_R(0.0);
     obs->estimate.outliers = 0;
+    obs->estimate.mu = sim->k.mu;
+    obs->estimate.mu_sigma = BS_R(0.0);
     obs->ready = OBSERVER_READY;
+    obs->estimate.mu_sigma = friction_sigma(obs);
     return BS_OK;
 }
 
@@ -627,6 +687,26 @@ static void correct_position(bs_observer *obs, bs_sim *sim, bs_real interval)
     obs->estimate.s = bs_sim_position(sim);
 }
 
+/* 8: mu from the persistent part of the s error, over interval [s]. */
+static void estimate_friction(bs_observer *obs, bs_sim *sim, bs_real interval)
+{
+    const bs_observer_options *o = &obs->options;
+    const bs_real mu_scene = sim->scene->mu;
+    const bs_real low = (BS_R(1.0) - (bs_real)BS_OBSERVER_FRICTION_RANGE) * mu_scene;
+    const bs_real high = (BS_R(1.0) + (bs_real)BS_OBSERVER_FRICTION_RANGE) * mu_scene;
+    bs_real mu;
+    if (!(o->friction_gain > BS_R(0.0)) || !(mu_scene > BS_R(0.0)) || !o->correct_position
+        || (bs_real)obs->steps * sim->scene->dt < o->settle_time || !(obs->estimate.s_sigma < o->friction_sigma))
+        return; /* nothing to learn from: mu^ and what is known of it hold */
+    obs->friction_persist += interval / o->friction_time * (obs->estimate.s_error - obs->friction_persist);
+    obs->friction_learnt += interval;
+    mu = sim->k.mu - o->friction_gain * mu_scene * friction_drive(obs) * interval;
+    mu = mu < low ? low : mu > high ? high : mu;
+    (void)bs_sim_set_contact_laws(sim, mu, sim->k.e_n); /* within the range: accepted */
+    obs->estimate.mu = sim->k.mu;
+    obs->estimate.mu_sigma = friction_sigma(obs);
+}
+
 /* One step, with a measurement (measured 1) or without one: the sample of
  * y_k was lost, and the step does all but what needs it (the output
  * injection and the lock-in's products with y). */
@@ -687,6 +767,7 @@ static bs_status observe(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_r
     if (obs->steps % POSITION_EVERY == 0) {
         estimate_position(obs, sim, dt);
         correct_position(obs, sim, dt * (bs_real)POSITION_EVERY);
+        estimate_friction(obs, sim, dt * (bs_real)POSITION_EVERY);
     }
     obs->estimate.s = bs_sim_position(sim);
     return BS_OK;
@@ -719,6 +800,8 @@ bs_status bs_observer_get(const bs_observer *obs, bs_observer_estimate *estimate
     estimate->measurement = obs->estimate.measurement;
     estimate->prediction = obs->estimate.prediction;
     estimate->innovation = obs->estimate.innovation;
+    estimate->mu = obs->estimate.mu;
+    estimate->mu_sigma = obs->estimate.mu_sigma;
     {
         const bs_real noise_sq = obs->gains->noise * obs->gains->noise;
         const bs_real held = obs->options.lockin_time / obs->sim->scene->dt; /* steps the flag stays */
@@ -728,5 +811,49 @@ bs_status bs_observer_get(const bs_observer *obs, bs_observer_estimate *estimate
                                ? BS_OBSERVER_HEALTH_OUTLIERS
                                : 0;
     }
+    return BS_OK;
+}
+
+bs_status bs_observer_get_friction(const bs_observer *obs, bs_real *mu, bs_real *mu_sigma)
+{
+    if (!obs || !mu)
+        return BS_E_NULL;
+    if (obs->ready != OBSERVER_READY)
+        return BS_E_UNINITIALISED;
+    *mu = obs->estimate.mu;
+    if (mu_sigma)
+        *mu_sigma = obs->estimate.mu_sigma;
+    return BS_OK;
+}
+
+bs_status bs_observer_set_friction(bs_observer *obs, bs_sim *sim, bs_real mu, bs_real mu_sigma)
+{
+    bs_status status;
+    bs_real prior, mu_scene, learnt;
+    if (!obs)
+        return BS_E_NULL;
+    if (obs->ready != OBSERVER_READY)
+        return BS_E_UNINITIALISED;
+    status = bs_sim_status(sim);
+    if (status != BS_OK)
+        return status;
+    if (sim != obs->sim)
+        return BS_E_ARGUMENT;
+    mu_scene = sim->scene->mu;
+    prior = friction_prior(obs);
+    if (!finite(mu) || !finite(mu_sigma) || !(mu >= (BS_R(1.0) - (bs_real)BS_OBSERVER_FRICTION_RANGE) * mu_scene)
+        || !(mu <= (BS_R(1.0) + (bs_real)BS_OBSERVER_FRICTION_RANGE) * mu_scene) || !(mu_sigma > BS_R(0.0))
+        || !(mu_sigma <= prior))
+        return BS_E_ARGUMENT;
+    learnt = FRICTION_LEARN_REF * (prior * prior / (mu_sigma * mu_sigma) - BS_R(1.0));
+    if (!finite(learnt))
+        return BS_E_ARGUMENT;
+    status = bs_sim_set_contact_laws(sim, mu, sim->k.e_n);
+    if (status != BS_OK)
+        return status;
+    obs->friction_learnt = learnt < BS_R(0.0) ? BS_R(0.0) : learnt;
+    obs->friction_persist = BS_R(0.0);
+    obs->estimate.mu = sim->k.mu;
+    obs->estimate.mu_sigma = friction_sigma(obs);
     return BS_OK;
 }

@@ -33,7 +33,8 @@ const char cli_twin_synopsis[] =
     "        [--latency S] [--noise SIGMA] [--accel-noise SIGMA] [--force-noise N] [--s0 S] [--t-end T]\n"
     "        [--every N] [--open-loop] [--no-position] [--lockin TAU] [--position-gain G]\n"
     "        [--position-rate R] [--deadband D] [--outlier-gate K] [--score-after T] [--tolerance D]\n"
-    "        [--map-frequencies F,F,...] [--set section.key=value ...]";
+    "        [--map-frequencies F,F,...] [--friction MU] [--restitution E] [--estimate-friction K]\n"
+    "        [--set section.key=value ...]";
 const char cli_twin_help[] =
     "  the twin corrected from measured signals (docs/twin.md, \"Observer\")\n"
     "  Runs the scene on the measured base acceleration, corrected from the measured signal; EST.csv every N steps: t,\n"
@@ -44,7 +45,10 @@ const char cli_twin_help[] =
     "  rows from --score-after T (default 5 s) on whose s_hat is within --tolerance D (default\n"
     "  0.005) of s_true; null, said why on stderr, when no row was scored (a stream without\n"
     "  s_true, or one that ends before T).\n"
-    "  --measured -: a live stream on standard input, read once to its end (give --noise).\n";
+    "  --measured -: a live stream on standard input, read once to its end (give --noise).\n"
+    "  --friction MU, --restitution E: the twin's contact laws, set on the running twin (the maps keep the\n"
+    "  scene's); --estimate-friction K: mu estimated from the persistent s error at gain K [1/s]\n"
+    "  (docs/twin.md, \"Friction\"); the estimates' last columns mu, mu_sigma.\n";
 
 const char cli_twin_plant_synopsis[] =
     "beamslider twin-plant SCENE.ini --out FILE.csv [--signal deflection|voltage] [--snr DB]\n"
@@ -84,6 +88,7 @@ typedef struct twin_cli {
     int open_loop, no_position;
     double lockin, position_gain, position_rate, position_deadband, outlier_gate;
     double score_after, tolerance;
+    double mu, e_n, friction_gain; /* NAN: the scene's; 0: no estimate */
 } twin_cli;
 
 /* ---- options ---- */
@@ -132,6 +137,8 @@ static void cli_defaults(twin_cli *c)
     c->score_after = 5.0;
     c->tolerance = 0.005;
     c->name = "bs_observer_gains_scene";
+    c->mu = c->e_n = NAN;
+    c->friction_gain = BS_OBSERVER_DEFAULT_FRICTION_GAIN;
 }
 
 /* --map-frequencies F,F,...: 1 to BS_OBSERVER_MAPS frequencies [Hz], > 0,
@@ -199,6 +206,9 @@ static int parse_valued(twin_cli *c, const char *option, const char *value)
     else if (!strcmp(option, "--outlier-gate")) return parse_number(option, value, 1.5, 1e6, &c->outlier_gate);
     else if (!strcmp(option, "--score-after")) return parse_number(option, value, 0.0, HUGE_VAL, &c->score_after);
     else if (!strcmp(option, "--tolerance")) return parse_number(option, value, 0.0, 1.0, &c->tolerance);
+    else if (!strcmp(option, "--friction")) return parse_number(option, value, 0.0, 10.0, &c->mu);
+    else if (!strcmp(option, "--restitution")) return parse_number(option, value, 0.0, 1.0, &c->e_n);
+    else if (!strcmp(option, "--estimate-friction")) return parse_number(option, value, 0.0, 1e3, &c->friction_gain);
     else if (!strcmp(option, "--bits") || !strcmp(option, "--every") || !strcmp(option, "--seed")) {
         if (parse_number(option, value, !strcmp(option, "--every") ? 1.0 : 0.0,
                          !strcmp(option, "--bits") ? 24.0 : 4e9, &x) != 0 || x != floor(x)) {
@@ -421,6 +431,9 @@ static twin_run_options run_options(const twin_cli *c)
     o.every = c->every;
     o.score_after = c->score_after;
     o.tolerance = c->tolerance;
+    o.observer.friction_gain = (bs_real)c->friction_gain;
+    o.mu = c->mu;
+    o.e_n = c->e_n;
     return o;
 }
 

@@ -120,6 +120,16 @@ TWIN_COST_SPECS := cortex-m4f:fig6:flash:$(call cm_elf,twin-cost-fig6,cortex-m4f
                    cortex-m4f:fig6_1mode:flash:$(call cm_elf,twin-cost-fig6_1mode,cortex-m4f) \
                    cortex-m4f:fig6_1mode:ram:$(call cm_elf,twin-cost-fig6_1mode-ram,cortex-m4f) \
                    cortex-m7:fig6:flash:$(call cm_elf,twin-cost-fig6,cortex-m7)
+# the friction estimate's cost (docs/twin.md, "Friction"): the 1 s stream without it and
+# with it running at every update (gate open, deadband wide: mu, and so the trajectory, stay
+# as without it, so that the brackets differ by the estimate alone)
+$(call twin_image,twin-cost-friction-off,cortex-m4f,fig6,float,fig6-1s,sim,-DTWIN_COST=1)
+$(call twin_image,twin-cost-friction-on,cortex-m4f,fig6,float,fig6-1s,sim,-DTWIN_COST=1 -DTWIN_FRICTION_GAIN=30 \
+    -DTWIN_FRICTION_SIGMA=1.5 -DTWIN_FRICTION_DEADBAND=1)
+twin-friction-cost: $(if $(CM_TOOLS_OK),$(call cm_elf,twin-cost-friction-off,cortex-m4f) \
+        $(call cm_elf,twin-cost-friction-on,cortex-m4f) $(TWIN_DIR)/fig6-1s.stream)
+	$(if $(CM_TOOLS_OK),@sh host/reports/friction_cost.sh $(call cm_elf,twin-cost-friction-off,cortex-m4f) \
+	    $(call cm_elf,twin-cost-friction-on,cortex-m4f),@echo "$(CM_TOOLS_MSG)")
 twin-firmware-report-images: $(foreach c,$(TWIN_COST_SPECS),$(call emb_word,$c,4)) $(TWIN_DIR)/fig6-60s.stream
 twin-firmware-report:
 	$(MAKE) --no-print-directory -j2 twin-firmware-report-images

@@ -8,7 +8,7 @@
 #include "out_json.h"
 
 const char twin_estimates_header[] =
-    "t,s_hat,s_sigma,amplitude,power,y,y_hat,s_true,phase_error,s_error,outliers,health\n";
+    "t,s_hat,s_sigma,amplitude,power,y,y_hat,s_true,phase_error,s_error,outliers,health,mu,mu_sigma\n";
 
 int twin_stream_open(twin_stream *m, const char *path, double dt, char *err, size_t err_size)
 {
@@ -44,10 +44,10 @@ void twin_stream_close(twin_stream *m)
 
 static int write_estimate(FILE *out, double t, const bs_observer_estimate *e, double s_true)
 {
-    return fprintf(out, "%.9g,%.9g,%.4g,%.6g,%.6g,%.6g,%.6g,%.9g,%.5g,%.5g,%lu,%d\n", t, (double)e->s,
+    return fprintf(out, "%.9g,%.9g,%.4g,%.6g,%.6g,%.6g,%.6g,%.9g,%.5g,%.5g,%lu,%d,%.6g,%.4g\n", t, (double)e->s,
                    (double)e->s_sigma, (double)e->amplitude, (double)e->power, (double)e->measurement,
                    (double)e->prediction, s_true, (double)e->phase_error, (double)e->s_error,
-                   (unsigned long)e->outliers, e->health) < 0;
+                   (unsigned long)e->outliers, e->health, (double)e->mu, (double)e->mu_sigma) < 0;
 }
 
 /* The twin's sim and observer: large, on the heap, one per run. */
@@ -123,6 +123,12 @@ int twin_run(const scene_file *file, const bs_scene *scene, const bs_observer_ga
     status = bs_sim_init(&w->sim, scene, BS_MODEL_FREE, (bs_real)file->params.s0);
     if (status == BS_OK)
         status = bs_sim_set_solver(&w->sim, &solver);
+    if (status == BS_OK && !(isnan(o->mu) && isnan(o->e_n))) {
+        bs_real mu, e_n;
+        bs_sim_get_contact_laws(&w->sim, &mu, &e_n);
+        status = bs_sim_set_contact_laws(&w->sim, isnan(o->mu) ? mu : (bs_real)o->mu,
+                                         isnan(o->e_n) ? e_n : (bs_real)o->e_n);
+    }
     if (status == BS_OK)
         status = bs_observer_init(&w->obs, &w->sim, gains, &o->observer);
     if (status != BS_OK) {
@@ -174,6 +180,9 @@ int twin_print_summary(FILE *out, const scene_file *file, const bs_observer_gain
     out_json_count(&j, "scored", (unsigned long long)tally->scored);
     out_json_number(&j, "within", "%.4f", scored ? (double)tally->within / (double)tally->scored : (double)NAN);
     out_json_number(&j, "rms_s_error", "%.6g", scored ? sqrt(tally->error_sq / (double)tally->scored) : (double)NAN);
+    out_json_number(&j, "friction_gain", "%g", (double)o->observer.friction_gain);
+    out_json_number(&j, "mu_final", "%.6g", (double)tally->last.mu);
+    out_json_number(&j, "mu_sigma_final", "%.4g", (double)tally->last.mu_sigma);
     out_json_number(&j, "wall_s", "%.3f", tally->elapsed);
     return out_json_finish(&j, out);
 }

@@ -35,6 +35,7 @@ typedef struct twin_run_options {
     long every;                    /* an estimate row every this many rows, >= 1 */
     double score_after;            /* [s] rows from this time on are scored ... */
     double tolerance;              /* ... within this distance of s_true */
+    double mu, e_n;                /* the twin's contact laws (bs_sim_set_contact_laws); NAN: the scene's */
 } twin_run_options;
 
 /* What the run counted, for its summary. */

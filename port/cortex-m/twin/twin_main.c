@@ -19,7 +19,12 @@
  * bs_board_mark() for the instruction counter, and the stack measured),
  * TWIN_CONSTANTS_IN_RAM (1: the scene and the gains copied to RAM before the
  * run, so that a step reads no constant from flash), TWIN_FIFO_SAMPLES,
- * TWIN_BLOCK_SAMPLES, and those of the clock (twin_clock_*.c). The gains come
+ * TWIN_BLOCK_SAMPLES, TWIN_FRICTION_GAIN (the observer's friction_gain: 0,
+ * the default, no friction estimate), TWIN_FRICTION_SIGMA and
+ * TWIN_FRICTION_DEADBAND (its gate and deadband; a cost image opens the gate
+ * and widens the deadband so that the estimate runs every update without
+ * changing mu, and so the trajectory: docs/twin.md, "Friction"), and those
+ * of the clock (twin_clock_*.c). The gains come
  * from twin_gains.h on the include path: `beamslider twin-gains SCENE.ini
  * --noise SIGMA --name twin_gains > twin_gains.h`.
  */
@@ -46,6 +51,15 @@
  * ADC's DMA block on a board (8 bytes a sample). */
 #ifndef TWIN_BLOCK_SAMPLES
 #define TWIN_BLOCK_SAMPLES 256u
+#endif
+#ifndef TWIN_FRICTION_GAIN
+#define TWIN_FRICTION_GAIN 0.0
+#endif
+#ifndef TWIN_FRICTION_SIGMA
+#define TWIN_FRICTION_SIGMA BS_OBSERVER_DEFAULT_FRICTION_SIGMA
+#endif
+#ifndef TWIN_FRICTION_DEADBAND
+#define TWIN_FRICTION_DEADBAND BS_OBSERVER_DEFAULT_FRICTION_DEADBAND
 #endif
 
 static bs_sim twin;
@@ -190,15 +204,19 @@ static void print_report(const twin_report *r)
 static bs_status start(const bs_scene *scene, const bs_observer_gains *gains)
 {
     bs_solver_options solver;
+    bs_observer_options options = bs_observer_defaults();
     bs_status status = bs_sim_init(&twin, scene, BS_MODEL_FREE, BS_SCENE_START);
     if (status != BS_OK)
         return status;
+    options.friction_gain = (bs_real)TWIN_FRICTION_GAIN;
+    options.friction_sigma = (bs_real)TWIN_FRICTION_SIGMA;
+    options.friction_deadband = (bs_real)TWIN_FRICTION_DEADBAND;
     solver.max_sweeps = BS_SCENE_SOLVER_MAX_SWEEPS;
     solver.tol_rel = BS_SCENE_SOLVER_TOL_REL;
     solver.tol_abs = BS_SCENE_SOLVER_TOL_ABS;
     solver.measure_residual = BS_SCENE_SOLVER_RESIDUAL;
     status = bs_sim_set_solver(&twin, &solver);
-    return status != BS_OK ? status : bs_observer_init(&obs, &twin, gains, NULL);
+    return status != BS_OK ? status : bs_observer_init(&obs, &twin, gains, &options);
 }
 
 int main(void)
