@@ -460,6 +460,7 @@ plot "$TMP/f_mu_lo.dat" u 1:2 w l lw 2 lc rgb "black" t "plant", \
      "$TMP/f_mu_lo.dat" u 1:3 w l lw 1.2 lc rgb "#9467bd" t "twin, commissioned + estimating mu"
 unset multiplot
 EOF
+provenance_figures "$stamp" "$FIG/twin_friction.png"
 
 version=$("$BIN" --version | head -1)
 cat > "$TMP/report.md" <<EOF
