@@ -8,7 +8,7 @@ gives these.
 """
 
 from beamslider import _double
-from beamslider._backend import bind
+from beamslider._bind import bind
 
 _made = bind(_double, __name__)
 

@@ -8,7 +8,7 @@ float and double follow different trajectories and have different hashes.
 """
 
 from beamslider import _float32
-from beamslider._backend import bind
+from beamslider._bind import bind
 
 _made = bind(_float32, __name__)
 
