@@ -2,7 +2,7 @@
 #
 #   make              build build/beamslider (REAL precision)
 #   make run          build and run the fig6 scene (60 s), print its summary
-#   make test         build and run the tests, float and double (150 CPU-s with the build done)
+#   make test         build and run the tests, float and double (budget: 150 CPU-s, build done)
 #   make test-long    the slow checks: valgrind, minute-long fuzzing, whole runs under QEMU,
 #                     a sharded map on a private single-node Slurm (as root; tests/slurm/), the
 #                     observer's measured s on its own 60 s plant (twin-bias-long)

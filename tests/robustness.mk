@@ -23,8 +23,8 @@
 #                         robustness-cli-float: float, in make test-long)
 #
 # `make test` runs robustness-cli, robustness-asan-smoke and fuzz-short
-# (TEST_EXTRA); `make test-long` robustness-asan, robustness-valgrind and
-# fuzz-minute (TEST_LONG). Knobs:
+# (TEST_EXTRA); `make test-long` robustness-asan, robustness-cli-float,
+# robustness-valgrind and fuzz-minute (TEST_LONG). Knobs:
 # FUZZ_CC (clang), ASAN_CC (gcc), FUZZ_SECONDS, FUZZ_TEST_SECONDS,
 # FUZZ_SHORT_RUNS, FUZZ_LONG_RUNS, FUZZ_JOBS.
 
