@@ -4,7 +4,7 @@
 #   make fuzz             every libFuzzer target for FUZZ_SECONDS (60) each,
 #                         corpus kept in $(BUILD)/fuzz/corpus; prints executions
 #                         and coverage per target
-#   make fuzz-short       a smoke run of the double targets: its seed corpus, then up
+#   make fuzz-short       a smoke run of five double targets: its seed corpus, then up
 #                         to FUZZ_SHORT_RUNS (300) executions or
 #                         FUZZ_TEST_SECONDS (1), FUZZ_JOBS (2) targets at a time
 #   make fuzz-minute      every target for FUZZ_SECONDS (60), FUZZ_JOBS at a time
@@ -138,11 +138,12 @@ fuzz: fuzz-build
 
 # The smoke run of `make test`: from the seeds alone (a fresh work corpus, so
 # that its cost does not grow with the corpora of longer runs).
-# The double targets only (one build of the library for all seven; the float
-# and compiled-scene targets, three more builds of it, are fuzz-minute's in
-# make test-long), to keep a fresh clone's make test within its budget.
-fuzz-short: $(FUZZ_DOUBLE:%=$(FUZZ_BUILD)/%)
-	@$(MAKE) --no-print-directory -j$(FUZZ_JOBS) $(FUZZ_DOUBLE:%=fuzz-short-%)
+# Five double targets, one per kind of input (one build of the library for
+# them; the others, and the float and compiled-scene builds, are fuzz-minute's
+# in make test-long), to keep a fresh clone's make test within its budget.
+FUZZ_SHORT := fuzz_scene fuzz_excitation fuzz_measured fuzz_step fuzz_api
+fuzz-short: $(FUZZ_SHORT:%=$(FUZZ_BUILD)/%)
+	@$(MAKE) --no-print-directory -j$(FUZZ_JOBS) $(FUZZ_SHORT:%=fuzz-short-%)
 
 fuzz-short-%: $(FUZZ_BUILD)/%
 	@rm -rf $(FUZZ_BUILD)/short/$*
