@@ -39,3 +39,23 @@ bs_step_report support_report(const bs_sim *sim)
     assert_int_equal(bs_sim_get_report(sim, &report), BS_OK);
     return report;
 }
+
+static uint64_t gaussian_state = 1;
+
+void support_gaussian_seed(uint64_t seed)
+{
+    gaussian_state = seed;
+}
+
+double support_gaussian(void)
+{
+    double u[2];
+    int i;
+    for (i = 0; i < 2; ++i) {
+        gaussian_state ^= gaussian_state >> 12;
+        gaussian_state ^= gaussian_state << 25;
+        gaussian_state ^= gaussian_state >> 27;
+        u[i] = ((double)((gaussian_state * UINT64_C(2685821657736338717)) >> 11) + 0.5) / 9007199254740992.0;
+    }
+    return sqrt(-2.0 * log(u[0])) * cos(6.283185307179586 * u[1]);
+}

@@ -24,6 +24,11 @@ void support_build(scene_file *file, bs_scene *scene, scene_model *model);
 /* The last step's contact report; fails the test if the sim refuses it. */
 bs_step_report support_report(const bs_sim *sim);
 
+/* Reproducible white Gaussian noise of unit variance (xorshift64*, Box-Muller):
+ * support_gaussian_seed starts the sequence again. */
+void support_gaussian_seed(uint64_t seed);
+double support_gaussian(void);
+
 /* Fails unless |actual - expected| <= abs_tol + rel_tol |expected|, printing
  * what was compared, both values and the tolerance. */
 #define assert_close(what, actual, expected, abs_tol, rel_tol) \

@@ -38,21 +38,6 @@ static void load_fig6(void)
     designed = 1;
 }
 
-/* Reproducible white Gaussian noise (xorshift64*, Box-Muller). */
-static uint64_t rng = 1;
-static double gaussian(void)
-{
-    double u[2];
-    int i;
-    for (i = 0; i < 2; ++i) {
-        rng ^= rng >> 12;
-        rng ^= rng << 25;
-        rng ^= rng >> 27;
-        u[i] = ((double)((rng * UINT64_C(2685821657736338717)) >> 11) + 0.5) / 9007199254740992.0;
-    }
-    return sqrt(-2.0 * log(u[0])) * cos(6.283185307179586 * u[1]);
-}
-
 /* The plant with friction mu from s = 0.3 for `before` seconds alone, then
  * a twin with the scene's friction started from its state and estimating mu
  * for `seconds` more. Returns the largest |mu^ - mu_scene| seen; *last the
@@ -75,13 +60,13 @@ static double run(double mu, double before, double seconds, bs_observer_estimate
     options.position_gain = BS_R(3.0);
     options.friction_gain = (bs_real)GAIN;
     assert_int_equal(bs_observer_init(&obs, &twin, &gains, &options), BS_OK);
-    rng = 0x9e3779b97f4a7c15u;
+    support_gaussian_seed(0x9e3779b97f4a7c15u);
     for (k = 1; k <= steps; ++k) {
         double a, y;
         bs_real mu_hat;
         assert_int_equal(bs_sim_step(&plant), BS_OK);
-        a = (double)bs_sim_base_acceleration(&plant) + ACCEL_NOISE * gaussian();
-        y = (double)bs_sim_sensor(&plant) + SIGNAL_NOISE * gaussian();
+        a = (double)bs_sim_base_acceleration(&plant) + ACCEL_NOISE * support_gaussian();
+        y = (double)bs_sim_sensor(&plant) + SIGNAL_NOISE * support_gaussian();
         assert_int_equal(bs_observer_step(&obs, &twin, (bs_real)a, (bs_real)y), BS_OK);
         assert_int_equal(bs_observer_get_friction(&obs, &mu_hat, NULL), BS_OK);
         worst = fmax(worst, fabs((double)mu_hat - (double)scene.mu));

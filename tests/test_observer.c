@@ -39,21 +39,6 @@ static void load_fig6(void)
     designed = 1;
 }
 
-/* Reproducible white Gaussian noise (xorshift64*, Box-Muller). */
-static uint64_t rng = 1;
-static double gaussian(void)
-{
-    double u[2];
-    int i;
-    for (i = 0; i < 2; ++i) {
-        rng ^= rng >> 12;
-        rng ^= rng << 25;
-        rng ^= rng >> 27;
-        u[i] = ((double)((rng * UINT64_C(2685821657736338717)) >> 11) + 0.5) / 9007199254740992.0;
-    }
-    return sqrt(-2.0 * log(u[0])) * cos(6.283185307179586 * u[1]);
-}
-
 /* The lock-in (core/src/bs_lockin.c) on a response of known amplitude and
  * phase: y = A cos(Omega t + phi) against a = a_0 cos(Omega t), each with
  * white noise 40 dB under its RMS, sampled at fig6's dt = 2e-5 s, tau =
@@ -85,14 +70,14 @@ static void test_lockin_measures_every_phase_without_bias(void **state)
         bs_lockin_reference reference;
         bs_lockin_basis basis;
         long k;
-        rng = 0x9e3779b97f4a7c15u;
+        support_gaussian_seed(0x9e3779b97f4a7c15u);
         bs_lockin_reference_init(&reference, (bs_real)dt, (bs_real)tau);
         memset(with_a, 0, sizeof with_a);
         memset(with_b, 0, sizeof with_b);
         for (k = 1; k <= steps; ++k) {
             const double c = cos(omega * (double)k * dt), sn = sin(omega * (double)k * dt);
-            const double y_noise = response * accel / (100.0 * sqrt(2.0)) * gaussian();
-            const bs_real a = (bs_real)(accel * c + accel / (100.0 * sqrt(2.0)) * gaussian());
+            const double y_noise = response * accel / (100.0 * sqrt(2.0)) * support_gaussian();
+            const bs_real a = (bs_real)(accel * c + accel / (100.0 * sqrt(2.0)) * support_gaussian());
             const bs_real b = bs_lockin_reference_step(&reference, a);
             for (i = 0; i < PHASES; ++i) {
                 const bs_real y = (bs_real)(response * accel * (cos_phi[i] * c - sin_phi[i] * sn) + y_noise);
@@ -140,12 +125,12 @@ static void run_pair(double seconds, double from, double noise_factor, pair_resu
     double sum = 0.0;
     long k;
     memset(r, 0, sizeof *r);
-    rng = 0x9e3779b97f4a7c15u;
+    support_gaussian_seed(0x9e3779b97f4a7c15u);
     for (k = 1; k <= steps; ++k) {
         double a, y, s_error;
         assert_int_equal(bs_sim_step(&plant), BS_OK);
-        a = (double)bs_sim_base_acceleration(&plant) + (noise_factor > 0.0) * ACCEL_NOISE * gaussian();
-        y = (double)bs_sim_sensor(&plant) + noise_factor * SIGNAL_NOISE * gaussian();
+        a = (double)bs_sim_base_acceleration(&plant) + (noise_factor > 0.0) * ACCEL_NOISE * support_gaussian();
+        y = (double)bs_sim_sensor(&plant) + noise_factor * SIGNAL_NOISE * support_gaussian();
         assert_int_equal(bs_observer_step(&obs, &twin, (bs_real)a, (bs_real)y), BS_OK);
         if (k < first)
             continue;
@@ -468,13 +453,13 @@ static void test_measured_s_on_the_maps_own_plant_is_unbiased(void **state)
     options.correct_position = 0;
     assert_int_equal(bs_sim_init(&twin, &scene, BS_MODEL_FREE, gains.table_s[point]), BS_OK);
     assert_int_equal(bs_observer_init(&obs, &twin, &gains, &options), BS_OK);
-    rng = 0x9e3779b97f4a7c15u;
+    support_gaussian_seed(0x9e3779b97f4a7c15u);
     for (k = 1; k <= lround(2.0 / (double)scene.dt); ++k) {
         bs_observer_estimate e;
         double a, y;
         assert_int_equal(bs_sim_step(&plant), BS_OK);
-        a = (double)bs_sim_base_acceleration(&plant) + ACCEL_NOISE * gaussian();
-        y = (double)bs_sim_sensor(&plant) + SIGNAL_NOISE * gaussian();
+        a = (double)bs_sim_base_acceleration(&plant) + ACCEL_NOISE * support_gaussian();
+        y = (double)bs_sim_sensor(&plant) + SIGNAL_NOISE * support_gaussian();
         assert_int_equal(bs_observer_step(&obs, &twin, (bs_real)a, (bs_real)y), BS_OK);
         if ((double)k * (double)scene.dt < 1.0 || k % 16 != 0)
             continue;
