@@ -707,6 +707,21 @@ static void estimate_friction(bs_observer *obs, bs_sim *sim, bs_real interval)
     obs->estimate.mu_sigma = friction_sigma(obs);
 }
 
+/* The guard of every call that changes the twin: an observer made by
+ * bs_observer_init, a sim fit to step, and that observer's own sim. */
+static bs_status usable(const bs_observer *obs, const bs_sim *sim)
+{
+    bs_status status;
+    if (!obs)
+        return BS_E_NULL;
+    if (obs->ready != OBSERVER_READY)
+        return BS_E_UNINITIALISED;
+    status = bs_sim_status(sim);
+    if (status != BS_OK)
+        return status;
+    return sim == obs->sim ? BS_OK : BS_E_ARGUMENT;
+}
+
 /* One step, with a measurement (measured 1) or without one: the sample of
  * y_k was lost, and the step does all but what needs it (the output
  * injection and the lock-in's products with y). */
@@ -718,14 +733,10 @@ static bs_status observe(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_r
     bs_real dt, e;
     int aligned;
 
-    if (!obs)
-        return BS_E_NULL;
-    if (obs->ready != OBSERVER_READY)
-        return BS_E_UNINITIALISED;
-    status = bs_sim_status(sim);
+    status = usable(obs, sim);
     if (status != BS_OK)
         return status;
-    if (sim != obs->sim || !finite(base_accel) || !finite(measurement))
+    if (!finite(base_accel) || !finite(measurement))
         return BS_E_ARGUMENT; /* refused: nothing changes */
     status = bs_sim_step_measured(sim, base_accel);
     if (status != BS_OK)
@@ -830,15 +841,9 @@ bs_status bs_observer_set_friction(bs_observer *obs, bs_sim *sim, bs_real mu, bs
 {
     bs_status status;
     bs_real prior, mu_scene, learnt;
-    if (!obs)
-        return BS_E_NULL;
-    if (obs->ready != OBSERVER_READY)
-        return BS_E_UNINITIALISED;
-    status = bs_sim_status(sim);
+    status = usable(obs, sim);
     if (status != BS_OK)
         return status;
-    if (sim != obs->sim)
-        return BS_E_ARGUMENT;
     mu_scene = sim->scene->mu;
     prior = friction_prior(obs);
     if (!finite(mu) || !finite(mu_sigma) || !(mu >= (BS_R(1.0) - (bs_real)BS_OBSERVER_FRICTION_RANGE) * mu_scene)
