@@ -68,7 +68,7 @@ fuzz_real_flag = -I$(BUILD)/$1/include
 # fuzz_objects PRECISION: the library objects of one precision
 fuzz_objects = $(FUZZ_SRC:%.c=$(FUZZ_BUILD)/$1/%.o)
 
-# The source revision the host library states (map_store.c, summary.c), for
+# The source revision the host library states (map_store.c, scene_summary.c), for
 # both precisions: the Makefile makes it only for the REAL of the make.
 $(FUZZ_BUILD)/include/bs_revision.h: .force
 	@mkdir -p $(dir $@)
@@ -84,7 +84,7 @@ $(FUZZ_BUILD)/$1/tests/fuzz/%.o: tests/fuzz/%.c $$(FUZZ_HEADERS) $(BUILD)/$1/inc
 	@mkdir -p $$(dir $$@)
 	$$(FUZZ_CC) $$(FUZZ_BASE) $$(WARNINGS) $(call fuzz_real_flag,$1) -fsanitize=fuzzer-no-link -c -o $$@ $$<
 
-$(FUZZ_BUILD)/$1/host/lib/map_store.o $(FUZZ_BUILD)/$1/host/lib/summary.o: $(FUZZ_BUILD)/include/bs_revision.h
+$(FUZZ_BUILD)/$1/host/lib/map/map_store.o $(FUZZ_BUILD)/$1/host/lib/scene/scene_summary.o: $(FUZZ_BUILD)/include/bs_revision.h
 endef
 $(eval $(call fuzz_precision_rules,double))
 $(eval $(call fuzz_precision_rules,float))
