@@ -119,7 +119,11 @@ BS_INLINE void add_corner(int n, const bs_step_constants *k, const bs_shape_cach
     const bs_real gap_n = n_x * d_x + n_z * d_z;
     const bs_real a1 = zeta * hh * (w_slope * w_slope - BS_R(1.0));
     const bs_real a2 = -zeta * hh * w_slope;
-    bs_real coef_ns = -n_x * a1 - n_z * a2; /* factor of phi_k' in W_N, + g_T below */
+    const bs_real t_x = -zeta * cos_alpha, t_z = -zeta * sin_alpha;
+    const bs_real gap_t = t_x * d_x + t_z * d_z;
+    /* the factor of phi_k' in W_N: g_T is part of the normal row with or
+     * without friction (the tangent turns with the beam's slope) */
+    const bs_real coef_ns = -n_x * a1 - n_z * a2 + gap_t;
     bs_real *normal;
     const int a = set->count++;
 
@@ -137,9 +141,7 @@ BS_INLINE void add_corner(int n, const bs_step_constants *k, const bs_shape_cach
 #endif
 #if BS_WITH_FRICTION
     {
-        const bs_real t_x = -zeta * cos_alpha, t_z = -zeta * sin_alpha;
         bs_real *tangent = set->dir_slider[BS_ROWS * a + 1];
-        coef_ns += t_x * d_x + t_z * d_z;
         set->mu[a] = k->mu;
         set->beam_coef[a][1][0] = -t_z;
         set->beam_coef[a][1][1] = -t_x * a1 - t_z * a2 - gap_n;

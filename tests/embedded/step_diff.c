@@ -8,9 +8,14 @@
  *     library's), taking the same scene header as data (DIFF_SCENE_HEADER).
  * Both print the status and state hash after one step from each of many
  * states (random ones around the scene's start, and ones a run reaches), and
- * the hash every 1000 steps of a run from the start. The two paths are one
- * implementation of the step, so the stated tolerance is none: the outputs
- * must be equal byte for byte (docs/design.md, "Determinism").
+ * the hash every 1000 steps of a run from the start, and after each state's
+ * hash its values (q, u, the slider's pose and velocity). The two paths are
+ * one implementation of the step, so the stated tolerance is none: the
+ * outputs must be equal byte for byte (docs/design.md, "Determinism") -
+ * except where the compiled scene leaves friction out and the run-time core
+ * solves the same contacts with tangential rows of mu = 0: another sequence
+ * of operations, compared value by value to a tolerance
+ * (tests/embedded/check_step_diff.sh).
  */
 #include <stdio.h>
 #include "beamslider.h"
@@ -101,8 +106,15 @@ int main(void)
             continue;
         }
         status = bs_sim_step(&sim);
-        printf("state %ld status %d active %02x hash %08lx\n", k, (int)status, report_active(&sim),
+        printf("state %ld status %d active %02x hash %08lx", k, (int)status, report_active(&sim),
                (unsigned long)bs_sim_hash(&sim));
+        if (bs_sim_get_state(&sim, q, u, pose, velocity) != BS_OK)
+            return 1;
+        for (i = 0; i < n && i < 20; ++i)
+            printf(" %.17g %.17g", (double)q[i], (double)u[i]);
+        for (i = 0; i < 3; ++i)
+            printf(" %.17g %.17g", (double)pose[i], (double)velocity[i]);
+        printf("\n");
     }
     return 0;
 }
