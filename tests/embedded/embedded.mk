@@ -124,17 +124,21 @@ EMB_MORE_PAIRS := $(call emb_check_pairs,$(EMB_MORE_CHECKS))
 # (tests/embedded/step_diff.c, docs/design.md "Determinism"): step_diff.c
 # built against the core compiled for SCENE (as a firmware builds it, at -O3
 # as the host core is) and against this build's own core objects with the
-# scene header as data; their outputs must be equal. `make test` runs
+# scene header as data; their outputs must be equal (without friction: to a
+# tolerance, below). `make test` runs
 # STEP_DIFF_SCENES in each REAL (test-one), `make test-long` every scene with
 # a header in configs/ in both precisions (step-diff-long).
 STEP_DIFF_SCENES := fig6 fig6_1mode
 STEP_DIFF_DIR := $(BUILD)/stepdiff
-# fig6_frictionless is left out: its compiled core (BS_WITH_FRICTION 0: no
-# tangential rows) and the run-time core given mu = 0 differ after one step in
-# 449 of 1500 states from the scene's start, by up to 0.2 % of a value's
-# scale - more than rounding. An open defect (issue 27's note): which path's
-# contact solve is wrong at mu = 0 is not yet known.
-STEP_DIFF_ALL := $(filter-out fig6_frictionless,$(basename $(notdir $(wildcard configs/*.h))))
+# A scene whose compiled core leaves friction out (fig6_frictionless) is
+# compared value by value instead: the run-time core solves its contacts
+# with tangential rows of mu = 0, another sequence of operations, whose
+# results differ from the compiled core's only where the contact solve stops
+# at its tolerance (three contacts, max_sweeps 2): within STEP_DIFF_TOLERANCE
+# of each value's scale (measured: 1.5e-4 in both precisions).
+STEP_DIFF_ALL := $(basename $(notdir $(wildcard configs/*.h)))
+STEP_DIFF_NO_FRICTION := fig6_frictionless
+STEP_DIFF_TOLERANCE := 5e-4
 define step__diff
 $(STEP_DIFF_DIR)/$1.$2.compiled: tests/embedded/step_diff.c $(CORE_SRC) $(wildcard core/*/*.h) configs/$1.h \
         $(call emb_config_h,$1,$2,subspace)
@@ -148,14 +152,15 @@ $(STEP_DIFF_DIR)/$1.$2.runtime: tests/embedded/step_diff.c configs/$1.h $(BUILD)
 	    -DDIFF_SCENE_HEADER='"configs/$1.h"' -o $$@ tests/embedded/step_diff.c $(CORE_SRC:%.c=$(BUILD)/$2/%.o) -lm
 endef
 $(foreach s,$(STEP_DIFF_ALL),$(foreach r,double float,$(eval $(call step__diff,$s,$r))))
-step_diff_pairs = $(foreach s,$1,$(STEP_DIFF_DIR)/$s.$2.compiled:$(STEP_DIFF_DIR)/$s.$2.runtime)
+step_diff_pairs = $(foreach s,$1,$(STEP_DIFF_DIR)/$s.$2.compiled:$(STEP_DIFF_DIR)/$s.$2.runtime$(if \
+    $(filter $s,$(STEP_DIFF_NO_FRICTION)),:$(STEP_DIFF_TOLERANCE)))
 .PHONY: step-diff-test step-diff-long
 # in this REAL (test-one)
-step-diff-test: $(foreach p,$(call step_diff_pairs,$(STEP_DIFF_SCENES),$(REAL)),$(subst :, ,$p))
+step-diff-test: $(foreach p,$(call step_diff_pairs,$(STEP_DIFF_SCENES),$(REAL)),$(filter-out $(STEP_DIFF_TOLERANCE),$(subst :, ,$p)))
 	@sh tests/embedded/check_step_diff.sh $(call step_diff_pairs,$(STEP_DIFF_SCENES),$(REAL))
 step-diff-long:
 	@set -e; for real in double float; do \
-	    $(MAKE) --no-print-directory REAL=$$real STEP_DIFF_SCENES='$(STEP_DIFF_ALL)' step-diff-test; done
+	    $(MAKE) --no-print-directory -j$(JOBS) REAL=$$real STEP_DIFF_SCENES='$(STEP_DIFF_ALL)' step-diff-test; done
 TEST_LONG += step-diff-long
 
 # The twin firmware (port/cortex-m/twin): twin-firmware-test, twin-firmware-report.
@@ -169,7 +174,8 @@ embedded-test: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_CHECK_PAIRS),$(call emb_wor
 
 # The images of EMB_MORE_CHECKS against their host twins, and their core symbols
 # (`make test-long`).
-embedded-more: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_MORE_PAIRS),$(call emb_word,$p,2) $(call emb_word,$p,3)))
+embedded-more:
+	$(if $(CM_TOOLS_OK),@$(MAKE) --no-print-directory -j$(JOBS) $(foreach p,$(EMB_MORE_PAIRS),$(call emb_word,$p,2) $(call emb_word,$p,3)))
 	$(if $(CM_TOOLS_OK),@sh tests/check_embedded.sh $(EMB_MORE_PAIRS),@echo "$(CM_TOOLS_MSG)")
 	$(if $(CM_TOOLS_OK),@CM_BUILD=$(CM_BUILD) sh tests/qemu/selftest.sh)
 	$(if $(CM_TOOLS_OK),@set -e; $(foreach c,$(EMB_MORE_CHECKS),NM=arm-none-eabi-nm sh tests/check_core_symbols.sh \
@@ -177,7 +183,8 @@ embedded-more: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_MORE_PAIRS),$(call emb_word
 TEST_LONG += embedded-more
 
 # The whole runs of EMB_LONG_CHECKS against their host twins (`make test-long`).
-embedded-long: $(if $(CM_TOOLS_OK),$(foreach p,$(EMB_LONG_PAIRS),$(call emb_word,$p,2) $(call emb_word,$p,3)))
+embedded-long:
+	$(if $(CM_TOOLS_OK),@$(MAKE) --no-print-directory -j$(JOBS) $(foreach p,$(EMB_LONG_PAIRS),$(call emb_word,$p,2) $(call emb_word,$p,3)))
 	$(if $(CM_TOOLS_OK),@CHECK_EMBEDDED_TIMEOUT=1800 sh tests/check_embedded.sh $(EMB_LONG_PAIRS),@echo "$(CM_TOOLS_MSG)")
 TEST_LONG += embedded-long
 
