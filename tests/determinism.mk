@@ -7,7 +7,7 @@
 DETERMINISM_BUILD := $(BUILD)/determinism-O0
 .PHONY: determinism-opt
 determinism-opt:
-	@$(MAKE) --no-print-directory BUILD=$(DETERMINISM_BUILD) REAL=float CORE_OPT=-O0 \
+	@$(MAKE) --no-print-directory -j$(JOBS) BUILD=$(DETERMINISM_BUILD) REAL=float CORE_OPT=-O0 \
 	    $(DETERMINISM_BUILD)/float/tests/test_golden
 	@echo "== determinism-opt: test_golden's pinned hashes from the core at -O0 (float)"
 	@$(DETERMINISM_BUILD)/float/tests/test_golden

@@ -21,8 +21,8 @@ CONSUMER_CM_LIB := $(if $(shell command -v $(CM_CC) 2>/dev/null),$(BUILD)/lib/co
 consumer-test: deps-test
 	@rm -rf $(CONSUMER_STAGE)
 	@$(MAKE) --no-print-directory -s TARGET=host install PREFIX=$(CONSUMER_STAGE) >/dev/null
-	@$(MAKE) --no-print-directory -s TARGET=host REAL=float $(CONSUMER_SCENE_LIB)
-	$(if $(CONSUMER_CM_LIB),@$(MAKE) --no-print-directory -s TARGET=cortex-m4f SCENE=fig6_1mode REAL=float lib >/dev/null)
+	@$(MAKE) --no-print-directory -s -j$(JOBS) TARGET=host REAL=float $(CONSUMER_SCENE_LIB)
+	$(if $(CONSUMER_CM_LIB),@$(MAKE) --no-print-directory -s -j$(JOBS) TARGET=cortex-m4f SCENE=fig6_1mode REAL=float lib >/dev/null)
 	@sh tests/check_consumer.sh $(CONSUMER_STAGE) $(abspath $(BUILD)) $(CONSUMER_SCENE_LIB) $(CONSUMER_CM_LIB)
 
 TEST_LONG += consumer-test

@@ -6,7 +6,7 @@
 .PHONY: slurm-check
 
 slurm-check:
-	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	$(MAKE) --no-print-directory -j$(JOBS) REAL=double $(BUILD)/double/beamslider
 	@sh tests/slurm/check_slurm.sh $(BUILD)/double/beamslider $(BUILD)
 
 TEST_LONG += slurm-check
