@@ -259,12 +259,13 @@ test: deps-test
 # make test-long: the packages and the double and float trees first, then
 # its targets JOBS at a time (tests/run_parallel.sh: each line prefixed with
 # its target; the slowest first, TEST_LONG_FIRST, so that the lanes end
-# together). Its targets build into trees of their own, or check the shared
-# ones already built: no two makes build the same file.
+# together; fuzz-minute's targets one at a time, a lane's share). Its targets
+# build into trees of their own, or check the shared ones already built: no
+# two makes build the same file.
 TEST_LONG_FIRST := fuzz-minute robustness-asan embedded-long robustness-valgrind
 test-long: deps-test robustness-deps fuzz-deps deps-python
 	@set -e; for real in double float; do $(MAKE) --no-print-directory -j$(JOBS) REAL=$$real test-one-build lib-one; done
-	@MAKE='$(MAKE)' bash tests/run_parallel.sh $(JOBS) $(filter $(TEST_LONG_FIRST),$(TEST_LONG)) \
+	@MAKE='$(MAKE)' FUZZ_JOBS=1 bash tests/run_parallel.sh $(JOBS) $(filter $(TEST_LONG_FIRST),$(TEST_LONG)) \
 	    $(filter-out $(TEST_LONG_FIRST),$(TEST_LONG))
 	@echo "make test-long: all long tests passed"
 
