@@ -38,6 +38,13 @@ FUZZ_SHORT_RUNS ?= 300
 FUZZ_LONG_RUNS ?= 1000000
 FUZZ_JOBS ?= 2
 FUZZ_BUILD := $(BUILD)/fuzz
+FUZZ_OPT := -O1
+# make test's sanitizer smoke (fuzz-short, robustness-asan-smoke): the same
+# rules in a tree of their own at -O0, which compiles in half the time of
+# -O1 (a fresh clone's budget); its runs are short, so their speed matters
+# little. fuzz-minute and fuzz-long use $(FUZZ_BUILD) at -O1.
+SANITIZED := $(BUILD)/sanitized
+SANITIZED_MAKE = $(MAKE) --no-print-directory FUZZ_BUILD=$(SANITIZED) FUZZ_OPT=-O0
 # The targets on the host library and the core, tests/fuzz/NAME.c, in double,
 # and those also built in float (NAME_float).
 FUZZ_DOUBLE := fuzz_scene fuzz_scene_set fuzz_excitation fuzz_measured fuzz_map fuzz_step fuzz_api
@@ -58,7 +65,7 @@ ROBUSTNESS_PACKAGES := valgrind
 # warns where gcc does not (e.g. -Wdouble-promotion on INFINITY), and the
 # project's warning gate is the gcc build.
 FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
-FUZZ_BASE := -std=c99 -O1 -g -ffp-contract=off -fno-math-errno $(FUZZ_SAN) \
+FUZZ_BASE := -std=c99 $(FUZZ_OPT) -g -ffp-contract=off -fno-math-errno $(FUZZ_SAN) \
              -Icore/include -Icore/src -Iport -Iport/host $(HOST_INC) -Itests/fuzz -I$(FUZZ_BUILD)/include \
              -DFUZZ_CONFIGS='"$(CURDIR)/configs"'
 FUZZ_LIB_WARNINGS := -Wall -Wextra -Wno-double-promotion
@@ -145,8 +152,8 @@ fuzz: fuzz-build
 # in make test-long), to keep a fresh clone's make test within its budget.
 FUZZ_SHORT := fuzz_scene fuzz_excitation fuzz_measured fuzz_step fuzz_api
 fuzz-short:
-	@$(MAKE) --no-print-directory -j$(JOBS) $(FUZZ_SHORT:%=$(FUZZ_BUILD)/%)
-	@$(MAKE) --no-print-directory -j$(FUZZ_JOBS) $(FUZZ_SHORT:%=fuzz-short-%)
+	@$(SANITIZED_MAKE) -j$(JOBS) $(FUZZ_SHORT:%=$(SANITIZED)/%)
+	@$(SANITIZED_MAKE) -j$(FUZZ_JOBS) $(FUZZ_SHORT:%=fuzz-short-%)
 
 fuzz-short-%: $(FUZZ_BUILD)/%
 	@rm -rf $(FUZZ_BUILD)/short/$*
@@ -220,23 +227,23 @@ robustness-asan:
 # 180 CPU-s: make test-long): the instrumented CLI on the crafted inputs of the
 # regressions (exit status, message, no output, inputs unchanged, and now no
 # sanitizer report), and the unit tests of the readers and of restore. Linked
-# from the objects fuzz-short builds anyway (clang, ASan + UBSan, -O1; the
-# fuzzer's coverage hooks are no-ops without libFuzzer), so that make test
-# compiles the host library under the sanitizers once, not twice (about 60
-# CPU-s of a fresh clone's budget); robustness-asan keeps gcc's sanitizers.
+# from the objects fuzz-short builds anyway ($(SANITIZED): clang, ASan +
+# UBSan, -O0; the fuzzer's coverage hooks are no-ops without libFuzzer), so
+# that make test compiles the host library under the sanitizers once, not
+# twice; robustness-asan keeps gcc's sanitizers.
 ASAN_SMOKE_TESTS := test_input_file test_excitation_file test_measured test_checkpoint test_out test_map test_api
-ASAN_SMOKE := $(FUZZ_BUILD)/smoke
+ASAN_SMOKE := $(SANITIZED)/smoke
 $(FUZZ_BUILD)/double/tests/%.o $(FUZZ_BUILD)/double/host/cli/%.o: FUZZ_BASE += -Itests -Ihost/cli
 $(FUZZ_BUILD)/double/tests/%.o: $(wildcard tests/*.h) | deps-test
 $(FUZZ_BUILD)/double/host/cli/main.o: $(FUZZ_BUILD)/include/bs_revision.h
-$(ASAN_SMOKE)/beamslider: $(HOST_CLI_SRC:%.c=$(FUZZ_BUILD)/double/%.o) $(call fuzz_objects,double)
+$(FUZZ_BUILD)/smoke/beamslider: $(HOST_CLI_SRC:%.c=$(FUZZ_BUILD)/double/%.o) $(call fuzz_objects,double)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_BASE) -o $@ $^ $(HOST_LIBS)
-$(ASAN_SMOKE)/%: $(FUZZ_BUILD)/double/tests/%.o $(FUZZ_BUILD)/double/tests/support.o $(call fuzz_objects,double)
+$(FUZZ_BUILD)/smoke/%: $(FUZZ_BUILD)/double/tests/%.o $(FUZZ_BUILD)/double/tests/support.o $(call fuzz_objects,double)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_BASE) -o $@ $^ $(TEST_LIBS)
 robustness-asan-smoke:
-	@$(MAKE) --no-print-directory -j$(JOBS) $(ASAN_SMOKE)/beamslider $(ASAN_SMOKE_TESTS:%=$(ASAN_SMOKE)/%)
+	@$(SANITIZED_MAKE) -j$(JOBS) $(ASAN_SMOKE)/beamslider $(ASAN_SMOKE_TESTS:%=$(ASAN_SMOKE)/%)
 	@echo "== robustness-asan-smoke: the CLI's crafted inputs and the readers' tests under -fsanitize=address,undefined ($(FUZZ_CC))"
 	@set -e; for t in $(ASAN_SMOKE_TESTS); do echo "== $$t (ASan)"; $(ASAN_ENV) $(ASAN_SMOKE)/$$t >/dev/null; done
 	@$(ASAN_ENV) sh tests/fuzz/check_robustness_cli.sh $(ASAN_SMOKE)/beamslider

@@ -76,6 +76,7 @@ typedef struct design_work {
 observer_design_options observer_design_defaults(double noise)
 {
     observer_design_options o;
+    int i;
     o.signal = BS_SIGNAL_DEFLECTION;
     o.noise = noise;
     o.force_noise = OBSERVER_DEFAULT_FORCE_NOISE;
@@ -83,6 +84,9 @@ observer_design_options observer_design_defaults(double noise)
     o.latency = 0;
     o.map_hold = OBSERVER_DEFAULT_MAP_HOLD;
     o.map_record = OBSERVER_DEFAULT_MAP_RECORD;
+    o.map_count = 0; /* the maps' frequencies from the scene */
+    for (i = 0; i < BS_OBSERVER_MAPS; ++i)
+        o.map_frequency[i] = 0.0;
     o.progress = NULL;
     o.progress_context = NULL;
     return o;
