@@ -262,10 +262,10 @@ test: deps-test
 # together; fuzz-minute's targets one at a time, a lane's share). Its targets
 # build into trees of their own, or check the shared ones already built: no
 # two makes build the same file.
-TEST_LONG_FIRST := fuzz-minute robustness-asan embedded-long robustness-valgrind
+TEST_LONG_FIRST := fuzz-minute robustness-valgrind robustness-asan consumer-test embedded-long step-diff-long scenarios-long embedded-more
 test-long: deps-test robustness-deps fuzz-deps deps-python
 	@set -e; for real in double float; do $(MAKE) --no-print-directory -j$(JOBS) REAL=$$real test-one-build lib-one; done
-	@MAKE='$(MAKE)' FUZZ_JOBS=1 bash tests/run_parallel.sh $(JOBS) $(filter $(TEST_LONG_FIRST),$(TEST_LONG)) \
+	@MAKE='$(MAKE)' FUZZ_JOBS=1 bash tests/run_parallel.sh $(JOBS) $(filter $(TEST_LONG),$(TEST_LONG_FIRST)) \
 	    $(filter-out $(TEST_LONG_FIRST),$(TEST_LONG))
 	@echo "make test-long: all long tests passed"
 
