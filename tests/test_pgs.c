@@ -265,6 +265,37 @@ static void test_redundant_pair(void **state)
     }
 }
 
+/* A contact problem at the edge of the range: free velocities whose scaled
+ * sum overflows (docs/robustness.md finding 32). The tolerance is relative
+ * to that sum, so it overflowed too and took the warm start's infinite
+ * residual as within it. A converged solve has a finite residual, for every
+ * number of contacts. */
+static void test_overflowing_scale_never_converges(void **state)
+{
+    bs_solver_options options = bs_solver_defaults();
+    int count, i, j;
+    (void)state;
+    options.measure_residual = 1;
+    for (count = 1; count <= 3; ++count) {
+        bs_contact_set set;
+        bs_step_report result;
+        set.count = count;
+        for (i = 0; i < 2 * count; ++i) {
+            for (j = 0; j < 2 * count; ++j)
+                set.delassus[i][j] = i == j ? BS_R(1.0) : BS_R(0.0);
+            set.free_velocity[i] = i % 2 ? BS_R(0.0) : BS_R(-0.75) * BS_REAL_MAX;
+            set.percussion[i] = BS_R(0.0);
+        }
+        for (i = 0; i < count; ++i)
+            set.mu[i] = BS_R(0.3);
+        bs_pgs_solve(&set, &options, &result);
+        if (result.converged && !isfinite(result.residual))
+            print_error("%d contacts: converged with residual %g\n", count, (double)result.residual);
+        assert_false(result.converged && !isfinite(result.residual));
+        assert_false(count > 1 && result.converged); /* the scale overflows from two on */
+    }
+}
+
 /* ---- two corners on one face: nearly parallel rows, solved exactly ------- */
 
 /* A deterministic generator (the test must not depend on the C library's). */
@@ -451,6 +482,7 @@ int main(void)
         cmocka_unit_test(test_residual_formula_matches_independent_one),
         cmocka_unit_test(test_warm_start_from_solution_needs_one_pass),
         cmocka_unit_test(test_redundant_pair),
+        cmocka_unit_test(test_overflowing_scale_never_converges),
         cmocka_unit_test(test_one_face_pairs_are_solved_exactly),
     };
     return cmocka_run_group_tests(tests, load_cases, free_cases);

@@ -915,6 +915,10 @@ BS_INLINE bs_goal goal_of(const bs_contact_set *set, int count, const bs_solver_
     scale = percussion_scale(set, count, step);
     goal.tolerance = options->tol_rel * scale + options->tol_abs;
     goal.exact = BS_R(64.0) * BS_REAL_EPS * scale;
+    /* A scale that overflowed would take any residual, an infinite one
+     * included, as within tolerance: such a solve never converges. */
+    if (!(scale <= BS_REAL_MAX))
+        goal.tolerance = goal.exact = BS_R(-1.0);
     return goal;
 }
 
