@@ -19,7 +19,8 @@
 #                         under the same sanitizers, linked from the fuzz
 #                         build's objects (clang; one sanitized build in make test)
 #   make robustness-valgrind  the test programs and the CLI under valgrind
-#                         memcheck (test_sim: all but its two long runs)
+#                         memcheck (test_sim, test_observer, test_contact:
+#                         without their longest cases, VG_SUBSET)
 #   make robustness-cli   regression checks of the CLI fixes (float and double)
 #                         and every real field at tiny and huge values (double;
 #                         robustness-cli-float: float, in make test-long)
@@ -255,23 +256,26 @@ robustness-asan-smoke:
 # 30e6-step phase test and the 1e6-step drift test, about 150 s under
 # valgrind); everything else runs whole.
 VG := valgrind -q --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect,possible
-VG_TESTS := $(filter-out test_sim,$(TESTS))
+# The test programs run under valgrind whole, but VG_SUBSET: those without
+# their longest cases (tests/fuzz/vg_NAME.c lists them and says why).
+VG_SUBSET := test_sim test_observer test_contact
+VG_TESTS := $(filter-out $(VG_SUBSET),$(TESTS))
 VG_OBJ := $(BUILD)/double
 
-$(VG_OBJ)/tests/fuzz/vg_test_sim: tests/fuzz/vg_test_sim.c tests/test_sim.c $(VG_OBJ)/tests/support.o \
+$(VG_OBJ)/tests/fuzz/vg_%: tests/fuzz/vg_%.c tests/%.c tests/fuzz/vg_subset.h $(VG_OBJ)/tests/support.o \
         $(HOST_LIB_SRC:%.c=$(VG_OBJ)/%.o) $(CORE_SRC:%.c=$(VG_OBJ)/%.o) | deps-test
 	@mkdir -p $(dir $@)
 	$(CC) -O2 -g $(BASE_CFLAGS) -I$(VG_OBJ)/include -Icore/include -Icore/src -Iport -Iport/host $(HOST_INC) -Itests \
-	    -o $@ tests/fuzz/vg_test_sim.c $(filter %.o,$^) $(TEST_LIBS)
+	    -o $@ $< $(filter %.o,$^) $(TEST_LIBS)
 
 robustness-deps:
 	@sh host/deps.sh $(ROBUSTNESS_PACKAGES)
 
 robustness-valgrind: robustness-deps
 	@$(MAKE) --no-print-directory -j$(JOBS) REAL=double $(VG_TESTS:%=$(VG_OBJ)/tests/%) $(VG_OBJ)/beamslider \
-	    $(VG_OBJ)/tests/fuzz/vg_test_sim
-	@echo "== robustness-valgrind: valgrind memcheck ($(words $(VG_TESTS)) test programs + test_sim subset + CLI)"
-	@set -e; for t in $(VG_TESTS:%=$(VG_OBJ)/tests/%) $(VG_OBJ)/tests/fuzz/vg_test_sim; do \
+	    $(VG_SUBSET:%=$(VG_OBJ)/tests/fuzz/vg_%)
+	@echo "== robustness-valgrind: valgrind memcheck ($(words $(VG_TESTS)) test programs + subsets of $(VG_SUBSET) + CLI)"
+	@set -e; for t in $(VG_SUBSET:%=$(VG_OBJ)/tests/fuzz/vg_%) $(VG_TESTS:%=$(VG_OBJ)/tests/%); do \
 	    start=$$(date +%s); \
 	    $(VG) --log-file=$(VG_OBJ)/valgrind.log ./$$t >$(VG_OBJ)/valgrind.out 2>&1 \
 	        || { cat $(VG_OBJ)/valgrind.out $(VG_OBJ)/valgrind.log; echo "robustness-valgrind: FAIL: $$t"; exit 1; }; \

@@ -1,0 +1,10 @@
+/* vg_test_observer.c - tests/test_observer.c for valgrind
+ * (tests/fuzz/vg_subset.h). The case left out, 60 % of the program's time,
+ * designs gains and maps at a second frequency (the design code of
+ * test_design_gives_kalman_gains_and_a_map) and runs the twin on two plants
+ * for seconds of simulated time (the observer's code of the tracking cases). */
+static const char *const vg_too_long[] = {
+    "test_maps_at_a_moved_excitation",
+};
+#include "vg_subset.h"
+#include "../test_observer.c"
