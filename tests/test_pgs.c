@@ -13,6 +13,7 @@
 #include "support.h"
 
 #include <cjson/cJSON.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -270,6 +271,11 @@ static void test_redundant_pair(void **state)
  * to that sum, so it overflowed too and took the warm start's infinite
  * residual as within it. A converged solve has a finite residual, for every
  * number of contacts. */
+#if BS_REAL_FLOAT
+#define LARGEST_REAL FLT_MAX
+#else
+#define LARGEST_REAL DBL_MAX
+#endif
 static void test_overflowing_scale_never_converges(void **state)
 {
     bs_solver_options options = bs_solver_defaults();
@@ -283,7 +289,7 @@ static void test_overflowing_scale_never_converges(void **state)
         for (i = 0; i < 2 * count; ++i) {
             for (j = 0; j < 2 * count; ++j)
                 set.delassus[i][j] = i == j ? BS_R(1.0) : BS_R(0.0);
-            set.free_velocity[i] = i % 2 ? BS_R(0.0) : BS_R(-0.75) * BS_REAL_MAX;
+            set.free_velocity[i] = i % 2 ? BS_R(0.0) : BS_R(-0.75) * LARGEST_REAL;
             set.percussion[i] = BS_R(0.0);
         }
         for (i = 0; i < count; ++i)

@@ -18,13 +18,11 @@
 typedef float bs_real;
 #define BS_R(x) (x##f)
 #define BS_REAL_EPS BS_R(1.1920929e-07) /* FLT_EPSILON */
-#define BS_REAL_MAX BS_R(3.40282347e+38) /* FLT_MAX */
 #define BS_REAL_NAME "float"
 #else
 typedef double bs_real;
 #define BS_R(x) (x)
 #define BS_REAL_EPS BS_R(2.220446049250313e-16) /* DBL_EPSILON */
-#define BS_REAL_MAX BS_R(1.7976931348623157e+308) /* DBL_MAX */
 #define BS_REAL_NAME "double"
 #endif
 

@@ -905,19 +905,20 @@ static void solve_many(bs_contact_set *set, const bs_real *step, bs_goal goal, i
     }
 }
 
-/* Step sizes r_i and the goal of a solve of count contacts (inlined with
- * the count a constant where it is 1 or 2: the loops unrolled). */
-BS_INLINE bs_goal goal_of(const bs_contact_set *set, int count, const bs_solver_options *options, bs_real *step)
+/* The goal of a solve of count contacts with step sizes r_i (step_sizes;
+ * inlined with the count a constant where it is 1 or 2: the loops
+ * unrolled). */
+BS_INLINE bs_goal goal_of(const bs_contact_set *set, int count, const bs_solver_options *options, const bs_real *step)
 {
+    const bs_real scale = percussion_scale(set, count, step);
     bs_goal goal;
-    bs_real scale;
-    step_sizes(set, count, step);
-    scale = percussion_scale(set, count, step);
     goal.tolerance = options->tol_rel * scale + options->tol_abs;
     goal.exact = BS_R(64.0) * BS_REAL_EPS * scale;
     /* A scale that overflowed would take any residual, an infinite one
-     * included, as within tolerance: such a solve never converges. */
-    if (!(scale <= BS_REAL_MAX))
+     * included, as within tolerance: such a solve never converges. (scale
+     * >= 0; the test needs no constant, which a controller reads from
+     * flash.) */
+    if (!(scale - scale == BS_R(0.0)))
         goal.tolerance = goal.exact = BS_R(-1.0);
     return goal;
 }
@@ -926,8 +927,8 @@ BS_INLINE bs_goal goal_of(const bs_contact_set *set, int count, const bs_solver_
 static void solve_one(bs_contact_set *set, const bs_solver_options *options, bs_step_report *report)
 {
     bs_real step[1], xi[ROWS];
-    const bs_goal goal = goal_of(set, 1, options, step);
     int exact, r;
+    step_sizes(set, 1, step);
     for (r = 0; r < ROWS; ++r)
         xi[r] = set->free_velocity[r] + set->delassus[r][0] * set->percussion[0]
 #if BS_WITH_FRICTION
@@ -944,7 +945,7 @@ static void solve_one(bs_contact_set *set, const bs_solver_options *options, bs_
 #endif
                 ;
         report->residual = residual_at(set, step, xi);
-        report->converged = report->residual <= goal.tolerance;
+        report->converged = report->residual <= goal_of(set, 1, options, step).tolerance;
     } else {
         report->residual = BS_R(-1.0);
         report->converged = exact;
@@ -958,10 +959,10 @@ void bs_pgs_solve(bs_contact_set *set, const bs_solver_options *options, bs_step
     if (set->count == 1) {
         solve_one(set, options, report);
     } else if (set->count == 2) {
-        const bs_goal goal = goal_of(set, 2, options, step);
-        solve_pair(set, step, goal, options->measure_residual, report);
+        step_sizes(set, 2, step);
+        solve_pair(set, step, goal_of(set, 2, options, step), options->measure_residual, report);
     } else {
-        const bs_goal goal = goal_of(set, set->count, options, step);
-        solve_many(set, step, goal, options->max_sweeps, report);
+        step_sizes(set, set->count, step);
+        solve_many(set, step, goal_of(set, set->count, options, step), options->max_sweeps, report);
     }
 }
