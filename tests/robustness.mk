@@ -252,12 +252,10 @@ robustness-asan-smoke:
 
 # ---- valgrind memcheck -----------------------------------------------------
 # The double test programs of the normal build and a few CLI runs.
-# test_sim runs as tests/fuzz/vg_test_sim.c (the same source, without the
-# 30e6-step phase test and the 1e6-step drift test, about 150 s under
-# valgrind); everything else runs whole.
 VG := valgrind -q --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect,possible
 # The test programs run under valgrind whole, but VG_SUBSET: those without
-# their longest cases (tests/fuzz/vg_NAME.c lists them and says why).
+# their longest cases (tests/fuzz/vg_NAME.c, the same source without the
+# cases it lists and says why; docs/robustness.md section 1).
 VG_SUBSET := test_sim test_observer test_contact
 VG_TESTS := $(filter-out $(VG_SUBSET),$(TESTS))
 VG_OBJ := $(BUILD)/double
