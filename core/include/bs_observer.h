@@ -174,22 +174,28 @@ typedef struct bs_observer {
     bs_observer_options options;
     uint64_t steps;
     int head;                                         /* ring index of the newest entry */
-    bs_real past_signal[BS_OBSERVER_MAX_LATENCY + 1]; /* the twin's signal, newest at head */
-    bs_real past_accel[BS_OBSERVER_MAX_LATENCY + 1];  /* a_k, aligned with it */
-    bs_real past_deflection[BS_OBSERVER_MAX_LATENCY + 1]; /* the twin's w(4L/7), aligned with it */
     bs_lockin_reference reference;                    /* the aligned a_k and its quadrature */
     bs_lowpass2 meas_a, meas_b;                       /* <y a>, <y b> */
     bs_lowpass2 twin_a, twin_b;                       /* <y^ a>, <y^ b> */
     bs_lowpass2 defl_a, defl_b;                       /* <w a>, <w b>: the twin's w(4L/7) */
     bs_real innovation_sq;                            /* running mean of e^2, each clipped at the gate */
     uint64_t last_outlier;                            /* step of the last outlier (0: none) */
-    int gain_interval;                                /* the gain schedule's interval of the last step */
+    int gain_interval;                                /* the gain schedule's interval of the last step
+                                                         (-1: none yet) */
+    bs_real gain_s_from, gain_s_to, gain_s_width;     /* its start, end and width in s */
+    bs_real gain_from[2 * BS_MAX_MODES + 1];          /* L_q, L_u, L_v at its start, */
+    bs_real gain_change[2 * BS_MAX_MODES + 1];        /* and their change over it */
     bs_shape_cache shape;                             /* the mode shapes expanded about the slider */
     bs_lowpass2 power;                                /* <p> */
     bs_lowpass2 s_error_mean, s_error_sq;             /* of the raw s error */
     bs_real friction_persist;                         /* the s error low-passed over friction_time */
     bs_real friction_learnt;                          /* time spent learning mu [s] */
     bs_observer_estimate estimate;
+    /* the delay lines last: what a sample reads stays within short offsets
+     * (a Cortex-M's VLDR reaches 1020 bytes) */
+    bs_real past_signal[BS_OBSERVER_MAX_LATENCY + 1]; /* the twin's signal, newest at head */
+    bs_real past_accel[BS_OBSERVER_MAX_LATENCY + 1];  /* a_k, aligned with it */
+    bs_real past_deflection[BS_OBSERVER_MAX_LATENCY + 1]; /* the twin's w(4L/7), aligned with it */
 } bs_observer;
 
 /* The default options. */

@@ -78,6 +78,7 @@ typedef struct bs_step_constants {
     bs_real stiffness_limit;            /* 4 / dt^2 [1/s^2], less the open patch's stiffness */
     bs_real corner[BS_CORNERS][2];      /* r_CP,i */
     bs_real half_thickness, length, stop_min, stop_max;
+    bs_real escape_min, escape_max;     /* the stops widened by h/2: where a step may end (bs_within_stops) */
     bs_real shape_scale, slope_scale;   /* shape_scale and 2 shape_scale: dphi/dx = slope_scale dphi/dt */
     bs_real mass_inv, inertia_inv;
     bs_real dt_gravity[2];              /* dt g (x, z) */

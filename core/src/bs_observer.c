@@ -327,7 +327,7 @@ bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer
     }
     obs->innovation_sq = BS_R(0.0);
     obs->last_outlier = 0;
-    obs->gain_interval = 0;
+    obs->gain_interval = -1;
     bs_shape_forget(&obs->shape);
     obs->estimate.s = bs_sim_position(sim);
     obs->estimate.s_sigma = SIGMA_UNKNOWN;
@@ -347,16 +347,42 @@ bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer
     return BS_OK;
 }
 
-/* The gains at s: linear between the schedule's points, held beyond its ends.
- * *interval: the interval of the last call, where the search starts (s moves
- * slowly: one comparison or two a step instead of a walk from the start); the
- * interval found is the one the walk from 0 finds. */
-static void gains_at(const bs_observer_gains *g, bs_real s, int n, int *interval, bs_real *gain_q, bs_real *gain_u,
-                     bs_real *gain_v)
+/* The gain schedule's interval i into the observer: its gains at the start
+ * and their change over it, formed once (the slider stays in an interval
+ * for many thousand steps, and the schedule may be in flash). */
+static void enter_interval(bs_observer *obs, int i, int n)
 {
+    const bs_observer_gains *g = obs->gains;
+    int k;
+    for (k = 0; k < n; ++k) {
+        obs->gain_from[k] = g->gain_q[i][k];
+        obs->gain_change[k] = g->gain_q[i + 1][k] - g->gain_q[i][k];
+        obs->gain_from[n + k] = g->gain_u[i][k];
+        obs->gain_change[n + k] = g->gain_u[i + 1][k] - g->gain_u[i][k];
+    }
+    obs->gain_from[2 * n] = g->gain_v[i];
+    obs->gain_change[2 * n] = g->gain_v[i + 1] - g->gain_v[i];
+    obs->gain_s_from = g->gain_s[i];
+    obs->gain_s_to = g->gain_s[i + 1];
+    obs->gain_s_width = g->gain_s[i + 1] - g->gain_s[i];
+    obs->gain_interval = i;
+}
+
+/* Where s lies in the gain schedule: returns t in [0, 1] within the
+ * interval it enters (enter_interval), the gains there being
+ * gain_from + t gain_change; held beyond the schedule's ends. The search
+ * starts at the last step's interval (s moves slowly: one comparison or
+ * two a step instead of a walk from the start); the interval found is the
+ * one the walk from 0 finds. */
+static bs_real gains_at(bs_observer *obs, bs_real s, int n)
+{
+    const bs_observer_gains *g = obs->gains;
     const int last = g->gain_count - 1;
-    bs_real t;
-    int i = *interval, k;
+    int i = obs->gain_interval;
+    if (i > 0 && i < last - 1 && s > obs->gain_s_from && s <= obs->gain_s_to)
+        return (s - obs->gain_s_from) / obs->gain_s_width; /* still inside an inner interval: what the walk finds */
+    if (i < 0)
+        i = 0;
     if (s < g->gain_s[0])
         s = g->gain_s[0];
     if (s > g->gain_s[last])
@@ -365,13 +391,9 @@ static void gains_at(const bs_observer_gains *g, bs_real s, int n, int *interval
         --i;
     while (i < last - 1 && s > g->gain_s[i + 1])
         ++i;
-    *interval = i;
-    t = (s - g->gain_s[i]) / (g->gain_s[i + 1] - g->gain_s[i]);
-    for (k = 0; k < n; ++k) {
-        gain_q[k] = g->gain_q[i][k] + t * (g->gain_q[i + 1][k] - g->gain_q[i][k]);
-        gain_u[k] = g->gain_u[i][k] + t * (g->gain_u[i + 1][k] - g->gain_u[i][k]);
-    }
-    *gain_v = g->gain_v[i] + t * (g->gain_v[i + 1] - g->gain_v[i]);
+    if (i != obs->gain_interval)
+        enter_interval(obs, i, n);
+    return (s - obs->gain_s_from) / obs->gain_s_width;
 }
 
 /* The sim's state as the correction changes it (3). */
@@ -404,13 +426,14 @@ static void correction_of(bs_observer *obs, const bs_sim *sim, bs_real e, correc
 {
     const bs_scene *scene = sim->scene;
     const int n = BS_NMODES(scene);
-    bs_real gain_q[BS_MAX_MODES], gain_u[BS_MAX_MODES], gain_v, phi[BS_MAX_MODES], slope[BS_MAX_MODES];
+    const bs_real *from = obs->gain_from, *change = obs->gain_change;
+    bs_real phi[BS_MAX_MODES], slope[BS_MAX_MODES];
     bs_real dw = BS_R(0.0), dw_slope = BS_R(0.0), dv = BS_R(0.0), dv_slope = BS_R(0.0);
     const bs_real x = sim->slider[0] + sim->x_c_low;
-    bs_real t = bs_shape_offset(scene, &obs->shape, x);
+    const bs_real within = gains_at(obs, x / sim->k.length, n);
+    bs_real t = sim->k.slope_scale * (x - obs->shape.centre); /* bs_shape_offset, from the prepared constants */
     int k;
 
-    gains_at(obs->gains, x / scene->length, n, &obs->gain_interval, gain_q, gain_u, &gain_v);
     /* phi and phi' at the slider from an expansion about it, as the contact
      * detection keeps them at the corners (core/src/bs_shape.c): the slider
      * moves slowly, and a piece polynomial per mode every step (from the
@@ -418,11 +441,11 @@ static void correction_of(bs_observer *obs, const bs_sim *sim, bs_real e, correc
      * the correction */
     if (!(bs_fabs(t) <= sim->shape_reach)) {
         bs_shape_expand(scene, x, &obs->shape);
-        t = bs_shape_offset(scene, &obs->shape, x);
+        t = sim->k.slope_scale * (x - obs->shape.centre);
     }
-    bs_shape_expanded(n, &obs->shape, t, x >= BS_R(0.0) && x <= scene->length, sim->k.slope_scale, phi, slope);
+    bs_shape_expanded(n, &obs->shape, t, x >= BS_R(0.0) && x <= sim->k.length, sim->k.slope_scale, phi, slope);
     for (k = 0; k < n; ++k) {
-        const bs_real dq = gain_q[k] * e, du = gain_u[k] * e;
+        const bs_real dq = (from[k] + within * change[k]) * e, du = (from[n + k] + within * change[n + k]) * e;
         c->q[k] = sim->q_beam[k] + dq;
         c->u[k] = sim->u_beam[k] + du;
         dw += phi[k] * dq;
@@ -446,9 +469,7 @@ static void correction_of(bs_observer *obs, const bs_sim *sim, bs_real e, correc
     c->voltage = BS_R(0.0);
 #if BS_WITH_PIEZO
     if (scene->load != BS_LOAD_NONE)
-        c->voltage = sim->voltage + gain_v * e;
-#else
-    (void)gain_v;
+        c->voltage = sim->voltage + (from[2 * n] + within * change[2 * n]) * e;
 #endif
 }
 
@@ -462,7 +483,7 @@ static int commit_correction(bs_sim *sim, const corrected_state *c)
     int k;
     for (k = 0; k < BS_NMODES(sim->scene); ++k)
         check += c->q[k] + c->u[k];
-    if (!finite(check) || (sim->model == BS_MODEL_FREE && !bs_within_stops(sim->scene, c->slider[0])))
+    if (!finite(check) || (sim->model == BS_MODEL_FREE && !bs_within_stops(&sim->k, c->slider[0])))
         return 0;
     for (k = 0; k < BS_NMODES(sim->scene); ++k) {
         sim->q_beam[k] = c->q[k];
@@ -684,7 +705,6 @@ static void correct_position(bs_observer *obs, bs_sim *sim, bs_real interval)
     if (rate < -o->position_rate)
         rate = -o->position_rate;
     move_slider(sim, rate * interval);
-    obs->estimate.s = bs_sim_position(sim);
 }
 
 /* 8: mu from the persistent part of the s error, over interval [s]. */
@@ -738,7 +758,7 @@ static bs_status observe(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_r
         return status;
     if (!finite(base_accel) || !finite(measurement))
         return BS_E_ARGUMENT; /* refused: nothing changes */
-    status = bs_sim_step_measured(sim, base_accel);
+    status = bs_step_measured(sim, base_accel); /* bs_sim_step_measured without its checks: made above */
     if (status != BS_OK)
         return status;
 
@@ -780,7 +800,6 @@ static bs_status observe(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_r
         correct_position(obs, sim, dt * (bs_real)POSITION_EVERY);
         estimate_friction(obs, sim, dt * (bs_real)POSITION_EVERY);
     }
-    obs->estimate.s = bs_sim_position(sim);
     return BS_OK;
 }
 
@@ -801,7 +820,7 @@ bs_status bs_observer_get(const bs_observer *obs, bs_observer_estimate *estimate
     if (obs->ready != OBSERVER_READY)
         return BS_E_UNINITIALISED;
     /* member by member, as in bs_observer_init: no memcpy in the core */
-    estimate->s = obs->estimate.s;
+    estimate->s = bs_sim_position(obs->sim); /* the twin's own, formed here: a division a step saved */
     estimate->s_sigma = obs->estimate.s_sigma;
     estimate->s_error = obs->estimate.s_error;
     estimate->amplitude = obs->estimate.amplitude;

@@ -120,6 +120,8 @@ void bs_prepare(bs_sim *sim)
     k->length = scene->length;
     k->stop_min = scene->stop_min;
     k->stop_max = scene->stop_max;
+    k->escape_min = scene->stop_min - scene->half_thickness;
+    k->escape_max = scene->stop_max + scene->half_thickness;
     k->shape_scale = scene->shape_scale;
     k->slope_scale = BS_R(2.0) * scene->shape_scale;
     k->mass_inv = scene->mass_inv;

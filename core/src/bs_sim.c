@@ -325,7 +325,7 @@ int bs_state_acceptable(const bs_sim *sim, const bs_real *q_beam, const bs_real 
     if (!all_finite(q_beam, sim->scene->n_modes) || !all_finite(u_beam, sim->scene->n_modes)
         || !all_finite(slider, 3) || !all_finite(slider_velocity, 3))
         return 0;
-    return !slider || sim->model != BS_MODEL_FREE || bs_within_stops(sim->scene, slider[0]);
+    return !slider || sim->model != BS_MODEL_FREE || bs_within_stops(&sim->k, slider[0]);
 }
 
 bs_status bs_sim_set_state(bs_sim *sim, const bs_real *q_beam, const bs_real *u_beam,

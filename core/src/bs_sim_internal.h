@@ -19,6 +19,10 @@ static inline int bs_sim_is_ready(const bs_sim *sim)
     return sim && sim->ready == BS_SIM_READY;
 }
 
+/* bs_sim_step_measured for a caller that has checked what it checks (the
+ * sim ready, base_accel finite): the observer, every sample. */
+bs_status bs_step_measured(bs_sim *sim, bs_real base_accel);
+
 /* BS_E_NULL or BS_E_UNINITIALISED for a sim that is not ready, else BS_OK. */
 static inline bs_status bs_sim_status(const bs_sim *sim)
 {
@@ -50,9 +54,9 @@ static inline bs_real bs_real_nan(void)
  * further out means the stop did not hold (docs/design.md 5). The step
  * refuses to end outside this band (BS_E_ESCAPED) and bs_sim_set_state
  * accepts exactly this band. NaN is outside. */
-static inline int bs_within_stops(const bs_scene *scene, bs_real x)
+static inline int bs_within_stops(const bs_step_constants *k, bs_real x)
 {
-    return x >= scene->stop_min - scene->half_thickness && x <= scene->stop_max + scene->half_thickness;
+    return x >= k->escape_min && x <= k->escape_max;
 }
 
 /* The rules a state must meet to be a sim's, shared by the setters and

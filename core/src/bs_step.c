@@ -219,7 +219,7 @@ BS_INLINE bs_status end_of_step(const bs_sim *sim, step_state *s, const int n)
     check += s->x_end + s->slider[1] + s->slider[2] + s->u_slider[0] + s->u_slider[1] + s->u_slider[2];
     if (check - check != BS_R(0.0))
         return BS_E_NONFINITE;
-    if (sim->model == BS_MODEL_FREE && !bs_within_stops(sim->scene, s->x_end))
+    if (sim->model == BS_MODEL_FREE && !bs_within_stops(&sim->k, s->x_end))
         return BS_E_ESCAPED;
     return BS_OK;
 }
@@ -322,5 +322,10 @@ bs_status bs_sim_step_measured(bs_sim *sim, bs_real base_accel)
         return status;
     if (base_accel - base_accel != BS_R(0.0)) /* NaN or infinite: refused, nothing changes */
         return BS_E_ARGUMENT;
+    return step(sim, base_accel);
+}
+
+bs_status bs_step_measured(bs_sim *sim, bs_real base_accel)
+{
     return step(sim, base_accel);
 }

@@ -28,9 +28,9 @@
 void *sbrk(ptrdiff_t increment);   /* newlib; <unistd.h> hides it under -std=c99 */
 
 /* Internal, used by the assembly below (hence external linkage). */
-uint32_t bs_board_paint_low;       /* lowest painted address (word aligned); 0: never painted */
-uint32_t bs_board_paint_ref;       /* stack pointer of bs_board_stack_paint's caller */
-uint32_t bs_board_paint_setup(uint32_t caller_sp);
+__attribute__((used)) uint32_t bs_board_paint_low;     /* lowest painted address (word aligned); 0: never painted */
+__attribute__((used)) uint32_t bs_board_paint_ref;     /* stack pointer of bs_board_stack_paint's caller */
+__attribute__((used)) uint32_t bs_board_paint_setup(uint32_t caller_sp);
 
 /* noinline + volatile asm with a memory clobber: the call always happens, exactly here. */
 __attribute__((noinline)) void bs_board_mark(void)
