@@ -187,6 +187,108 @@ static void test_beam_correction_converges_faster_than_open_loop(void **state)
     assert_true(corrected.error_rms < 2.0 * SIGNAL_NOISE);
 }
 
+/* L_q(s) and L_u(s) of the gain schedule at s, interpolated here in double
+ * (held beyond its ends), and the size of the two points' gains (what the
+ * interpolation in the precision rounds against). */
+static void schedule_at(double s, double *gain_q, double *gain_u, double *size_q, double *size_u)
+{
+    const int last = gains.gain_count - 1;
+    int i = 0, k;
+    double t;
+    if (s < (double)gains.gain_s[0])
+        s = (double)gains.gain_s[0];
+    if (s > (double)gains.gain_s[last])
+        s = (double)gains.gain_s[last];
+    while (i < last - 1 && s > (double)gains.gain_s[i + 1])
+        ++i;
+    t = (s - (double)gains.gain_s[i]) / ((double)gains.gain_s[i + 1] - (double)gains.gain_s[i]);
+    for (k = 0; k < scene.n_modes; ++k) {
+        const double q0 = (double)gains.gain_q[i][k], q1 = (double)gains.gain_q[i + 1][k];
+        const double u0 = (double)gains.gain_u[i][k], u1 = (double)gains.gain_u[i + 1][k];
+        gain_q[k] = q0 + t * (q1 - q0);
+        gain_u[k] = u0 + t * (u1 - u0);
+        size_q[k] = fabs(q0) + fabs(q1);
+        size_u[k] = fabs(u0) + fabs(u1);
+    }
+}
+
+/* The beam correction is L(s) e with L interpolated in the gain schedule at
+ * the twin's s, wherever the slider is and however it got there: one
+ * observer visits positions in every interval of fig6's schedule, forward,
+ * back, on a knot and beyond both ends (the observer keeps the interval of
+ * the last step and enters another only when s leaves it), and each
+ * sample's change of q and u, against a sim stepped alike without the
+ * observer, is L_q e and L_u e as this test interpolates them. */
+static void test_beam_correction_follows_the_gain_schedule(void **state)
+{
+    bs_observer_options options = bs_observer_defaults();
+    bs_real q[BS_MAX_MODES], u[BS_MAX_MODES], slider[3], velocity[3];
+    const int last = gains.gain_count - 1;
+    int visit, k;
+    (void)state;
+    load_fig6();
+    options.correct_position = 0;
+    start_pair(0.3, &options);
+    for (k = 0; k < 2000; ++k) /* a beam in motion */
+        assert_int_equal(bs_sim_step(&twin), BS_OK);
+    assert_int_equal(bs_sim_get_state(&twin, q, u, slider, velocity), BS_OK);
+    assert_int_equal(bs_observer_init(&obs, &twin, &gains, &options), BS_OK);
+    for (visit = 0; visit < 4 * last + 4; ++visit) {
+        /* intervals 0, last-1, 1, last-2, ... a third of the way in, then two
+         * thirds; then a knot, both ends and beyond them */
+        const int i = visit % 2 ? last - 1 - (visit / 2) % last : (visit / 2) % last;
+        double s = (double)gains.gain_s[i] + (visit / (2 * last) + 1) / 3.0
+                                                  * ((double)gains.gain_s[i + 1] - (double)gains.gain_s[i]);
+        double gain_q[BS_MAX_MODES], gain_u[BS_MAX_MODES], size_q[BS_MAX_MODES], size_u[BS_MAX_MODES], e;
+        bs_real q_twin[BS_MAX_MODES], u_twin[BS_MAX_MODES], q_alone[BS_MAX_MODES], u_alone[BS_MAX_MODES];
+        bs_real scratch[6], prediction;
+        bs_observer_estimate estimate;
+        int aligned;
+        if (visit >= 4 * last)
+            s = visit == 4 * last     ? (double)gains.gain_s[last / 2]
+                : visit == 4 * last + 1 ? 0.0
+                : visit == 4 * last + 2 ? (double)gains.gain_s[last]
+                                        : 1.0;
+        if (s < (double)scene.stop_min / (double)scene.length)
+            s = (double)scene.stop_min / (double)scene.length;
+        if (s > (double)scene.stop_max / (double)scene.length)
+            s = (double)scene.stop_max / (double)scene.length;
+        slider[0] = (bs_real)(s * (double)scene.length);
+        /* the twin and, alongside, the same sim without the observer: both
+         * fresh (no warm start of their own) in the same state */
+        assert_int_equal(bs_sim_init(&twin, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+        assert_int_equal(bs_sim_set_state(&twin, q, u, slider, velocity), BS_OK);
+        assert_int_equal(bs_sim_init(&plant, &scene, BS_MODEL_FREE, BS_R(0.3)), BS_OK);
+        assert_int_equal(bs_sim_set_state(&plant, q, u, slider, velocity), BS_OK);
+        assert_int_equal(bs_sim_step_measured(&plant, BS_R(1.0)), BS_OK);
+        /* the twin's prediction of this sample (its signal latency steps ago,
+         * or the step's own), and a measurement 2 sigma of noise from it:
+         * inside the outlier gate */
+        aligned = (obs.head + 1) % (BS_OBSERVER_MAX_LATENCY + 1) - gains.latency;
+        if (aligned < 0)
+            aligned += BS_OBSERVER_MAX_LATENCY + 1;
+        prediction = gains.latency == 0 ? bs_sim_sensor(&plant) : obs.past_signal[aligned];
+        assert_int_equal(bs_observer_step(&obs, &twin, BS_R(1.0), prediction + (bs_real)(2.0 * SIGNAL_NOISE)), BS_OK);
+        assert_int_equal(bs_observer_get(&obs, &estimate), BS_OK);
+        assert_int_equal(estimate.outliers, 0);
+        e = (double)estimate.innovation;
+        assert_true(fabs(e - 2.0 * SIGNAL_NOISE) < 0.01 * SIGNAL_NOISE);
+        schedule_at((double)bs_sim_position(&plant), gain_q, gain_u, size_q, size_u);
+        assert_int_equal(bs_sim_get_state(&twin, q_twin, u_twin, scratch, scratch + 3), BS_OK);
+        assert_int_equal(bs_sim_get_state(&plant, q_alone, u_alone, scratch, scratch + 3), BS_OK);
+        for (k = 0; k < scene.n_modes; ++k) {
+            /* q + dq rounds to half an ulp of the sum; the interpolation in
+             * the precision to a few ulps of the two points' gains */
+            const double ulp = BS_REAL_FLOAT ? 6e-8 : 1.2e-16;
+            const double dq = (double)q_twin[k] - (double)q_alone[k], du = (double)u_twin[k] - (double)u_alone[k];
+            if (fabs(dq - gain_q[k] * e) > 4.0 * ulp * (fabs((double)q_twin[k]) + size_q[k] * fabs(e))
+                || fabs(du - gain_u[k] * e) > 4.0 * ulp * (fabs((double)u_twin[k]) + size_u[k] * fabs(e)))
+                fail_msg("visit %d at s = %.6f, mode %d: dq %.9g against L_q e %.9g, du %.9g against L_u e %.9g",
+                         visit, s, k + 1, dq, gain_q[k] * e, du, gain_u[k] * e);
+        }
+    }
+}
+
 /* A twin started 0.05 L from the plant (0.35 against 0.3) is brought back:
  * within 0.01 over [10, 12] s, where the open-loop twin is further off. */
 static void test_position_tracker_recovers_a_twin_started_off(void **state)
@@ -549,6 +651,7 @@ int main(void)
         cmocka_unit_test(test_outliers_are_skipped_counted_and_flagged),
         cmocka_unit_test(test_predict_steps_open_loop_and_keeps_the_delay_line),
         cmocka_unit_test(test_beam_correction_converges_faster_than_open_loop),
+        cmocka_unit_test(test_beam_correction_follows_the_gain_schedule),
         cmocka_unit_test(test_position_tracker_recovers_a_twin_started_off),
         cmocka_unit_test(test_confidence_is_low_where_the_response_is_tiny),
         cmocka_unit_test(test_maps_at_a_moved_excitation),
