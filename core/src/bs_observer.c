@@ -766,7 +766,7 @@ static bs_status observe(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_r
     dt = sim->scene->dt;
     obs->steps += 1;
     obs->head = obs->head == BS_OBSERVER_MAX_LATENCY ? 0 : obs->head + 1;
-    obs->past_deflection[obs->head] = bs_sim_sensor(sim);
+    obs->past_deflection[obs->head] = bs_sensor_of(sim);
     obs->past_signal[obs->head] = g->signal == BS_SIGNAL_DEFLECTION ? obs->past_deflection[obs->head]
                                                                     : twin_signal(sim, g->signal);
     obs->past_accel[obs->head] = base_accel;

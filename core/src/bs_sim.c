@@ -256,13 +256,9 @@ bs_status bs_sim_get_report(const bs_sim *sim, bs_step_report *report)
 
 bs_real bs_sim_sensor(const bs_sim *sim)
 {
-    bs_real w = BS_R(0.0);
-    int k;
     if (!bs_sim_is_ready(sim))
         return bs_real_nan();
-    for (k = 0; k < BS_NMODES(sim->scene); ++k)
-        w += sim->k.phi_sensor[k] * sim->q_beam[k];
-    return w;
+    return bs_sensor_of(sim);
 }
 
 bs_real bs_sim_position(const bs_sim *sim)

@@ -19,6 +19,17 @@ static inline int bs_sim_is_ready(const bs_sim *sim)
     return sim && sim->ready == BS_SIM_READY;
 }
 
+/* w(4L/7) = sum_k phi_k(4/7) q_k of a ready sim: bs_sim_sensor without its
+ * check, inlined where it runs every sample (the observer). */
+static inline bs_real bs_sensor_of(const bs_sim *sim)
+{
+    bs_real w = BS_R(0.0);
+    int k;
+    for (k = 0; k < BS_NMODES(sim->scene); ++k)
+        w += sim->k.phi_sensor[k] * sim->q_beam[k];
+    return w;
+}
+
 /* bs_sim_step_measured for a caller that has checked what it checks (the
  * sim ready, base_accel finite): the observer, every sample. */
 bs_status bs_step_measured(bs_sim *sim, bs_real base_accel);
