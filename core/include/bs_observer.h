@@ -23,7 +23,9 @@
  *
  * Like bs_sim, a bs_observer is a caller-owned struct of compile-time size
  * (`static bs_observer obs;`) whose members are private; read it through
- * bs_observer_get. It holds a pointer to its gains, which must outlive it.
+ * bs_observer_get. It holds a pointer to its gains, which must outlive it
+ * and not change under it: it keeps the gains of the schedule's interval the
+ * slider is in (bs_observer_init again after changing them).
  */
 #ifndef BS_OBSERVER_H
 #define BS_OBSERVER_H
