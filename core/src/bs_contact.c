@@ -75,6 +75,11 @@
 #define MODE_GAIN(k, i) ((void)(k), BS_R(1.0))
 #endif
 
+/* The start of a sum over the modes: its mode-0 term (rather than 0 + it:
+ * an addition and a 0 from flash saved), or 0 for a rigid beam (no modes).
+ * With n a constant (bs_inline.h) the test is folded away. */
+#define MODE_0_TERM(n, term) ((n) > 0 ? (term) : BS_R(0.0))
+
 /* cos alpha = (1 + w'^2)^(-1/2). For x = w'^2 < 1/400 (slopes below 0.05, all
  * but the wildest steps) the binomial series 1 - x/2 + 3x^2/8 - 5x^3/16 + ...,
  * alternating with falling terms, stops below half an ulp: in float after
@@ -200,8 +205,8 @@ BS_INLINE int side_of_slot(int n, const bs_scene *scene, const bs_step_constants
     /* w = sum_m s_m t^m with s_m = sum_k q_k b[k][m]: the modes summed once
      * for both corners (0 inside a clamp, which moves with the base) */
     for (m = 0; m < BS_SHAPE_TERMS; ++m)
-        sum[m] = BS_R(0.0);
-    for (i = 0; i < n; ++i)
+        sum[m] = MODE_0_TERM(n, frame->q_beam[0] * cache->coef[0][m]);
+    for (i = 1; i < n; ++i)
         for (m = 0; m < BS_SHAPE_TERMS; ++m)
             sum[m] += frame->q_beam[i] * cache->coef[i][m];
     bs_shape_taylor(sum, top.t, &w, &dw);
@@ -301,9 +306,12 @@ BS_INLINE void cross_products(int n, const bs_step_constants *k, const bs_contac
                               bs_real *dot)
 {
     const bs_real *phi_a = set->phi[a], *slope_a = set->slope[a], *phi_b = set->phi[b], *slope_b = set->slope[b];
-    bs_real pp = BS_R(0.0), ps = BS_R(0.0), sp = BS_R(0.0), ss = BS_R(0.0);
+    bs_real pp = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi_a[0] * phi_b[0]);
+    bs_real ps = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi_a[0] * slope_b[0]);
+    bs_real sp = MODE_0_TERM(n, MODE_GAIN(k, 0) * slope_a[0] * phi_b[0]);
+    bs_real ss = MODE_0_TERM(n, MODE_GAIN(k, 0) * slope_a[0] * slope_b[0]);
     int i;
-    for (i = 0; i < n; ++i) {
+    for (i = 1; i < n; ++i) {
         const bs_real gp = MODE_GAIN(k, i) * phi_a[i], gs = MODE_GAIN(k, i) * slope_a[i];
         pp += gp * phi_b[i];
         ps += gp * slope_b[i];
@@ -401,10 +409,18 @@ BS_INLINE void problem_of_one(int n, const bs_step_constants *k, bs_contact_set 
                            const bs_real *u_slider_before)
 {
     const bs_real *phi = set->phi[0], *slope = set->slope[0];
-    shape_velocities v = { { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) } };
-    bs_real dot[4] = { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) };
+    shape_velocities v = { { MODE_0_TERM(n, phi[0] * u_beam[0]), MODE_0_TERM(n, slope[0] * u_beam[0]), BS_R(0.0),
+                             BS_R(0.0) } };
+    bs_real dot[4];
     int i;
-    for (i = 0; i < n; ++i) {
+#if BS_WITH_RESTITUTION
+    v.at[2] = MODE_0_TERM(n, phi[0] * u_beam_before[0]);
+    v.at[3] = MODE_0_TERM(n, slope[0] * u_beam_before[0]);
+#endif
+    dot[0] = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi[0] * phi[0]);
+    dot[1] = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi[0] * slope[0]);
+    dot[3] = MODE_0_TERM(n, MODE_GAIN(k, 0) * slope[0] * slope[0]);
+    for (i = 1; i < n; ++i) {
         const bs_real gp = MODE_GAIN(k, i) * phi[i], gs = MODE_GAIN(k, i) * slope[i];
         v.at[0] += phi[i] * u_beam[i];
         v.at[1] += slope[i] * u_beam[i];
@@ -430,13 +446,19 @@ BS_INLINE void problem_of_two(int n, const bs_step_constants *k, bs_contact_set 
                            const bs_real *u_slider_before)
 {
     const bs_real *phi_a = set->phi[0], *slope_a = set->slope[0], *phi_b = set->phi[1], *slope_b = set->slope[1];
-    shape_velocities va = { { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) } };
-    shape_velocities vb = { { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) } };
-    bs_real aa[4] = { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) };
-    bs_real bb[4] = { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) };
-    bs_real ba[4] = { BS_R(0.0), BS_R(0.0), BS_R(0.0), BS_R(0.0) };
+    shape_velocities va = { { MODE_0_TERM(n, phi_a[0] * u_beam[0]), MODE_0_TERM(n, slope_a[0] * u_beam[0]),
+                              BS_R(0.0), BS_R(0.0) } };
+    shape_velocities vb = { { MODE_0_TERM(n, phi_b[0] * u_beam[0]), MODE_0_TERM(n, slope_b[0] * u_beam[0]),
+                              BS_R(0.0), BS_R(0.0) } };
+    bs_real aa[4], bb[4], ba[4];
     int i;
-    for (i = 0; i < n; ++i) {
+#if BS_WITH_RESTITUTION
+    va.at[2] = MODE_0_TERM(n, phi_a[0] * u_beam_before[0]);
+    va.at[3] = MODE_0_TERM(n, slope_a[0] * u_beam_before[0]);
+    vb.at[2] = MODE_0_TERM(n, phi_b[0] * u_beam_before[0]);
+    vb.at[3] = MODE_0_TERM(n, slope_b[0] * u_beam_before[0]);
+#endif
+    for (i = 1; i < n; ++i) {
         va.at[0] += phi_a[i] * u_beam[i];
         va.at[1] += slope_a[i] * u_beam[i];
         vb.at[0] += phi_b[i] * u_beam[i];
@@ -449,7 +471,17 @@ BS_INLINE void problem_of_two(int n, const bs_step_constants *k, bs_contact_set 
 #endif
     }
     (void)u_beam_before;
-    for (i = 0; i < n; ++i) {
+    aa[0] = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi_a[0] * phi_a[0]);
+    aa[1] = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi_a[0] * slope_a[0]);
+    aa[3] = MODE_0_TERM(n, MODE_GAIN(k, 0) * slope_a[0] * slope_a[0]);
+    bb[0] = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi_b[0] * phi_b[0]);
+    bb[1] = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi_b[0] * slope_b[0]);
+    bb[3] = MODE_0_TERM(n, MODE_GAIN(k, 0) * slope_b[0] * slope_b[0]);
+    ba[0] = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi_b[0] * phi_a[0]);
+    ba[1] = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi_b[0] * slope_a[0]);
+    ba[2] = MODE_0_TERM(n, MODE_GAIN(k, 0) * slope_b[0] * phi_a[0]);
+    ba[3] = MODE_0_TERM(n, MODE_GAIN(k, 0) * slope_b[0] * slope_a[0]);
+    for (i = 1; i < n; ++i) {
         const bs_real gp = MODE_GAIN(k, i) * phi_b[i], gs = MODE_GAIN(k, i) * slope_b[i];
         aa[0] += MODE_GAIN(k, i) * phi_a[i] * phi_a[i];
         aa[1] += MODE_GAIN(k, i) * phi_a[i] * slope_a[i];

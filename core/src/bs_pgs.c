@@ -229,14 +229,14 @@ static int solve_contact(bs_contact_set *set, const bs_real *step, int a)
     return solve_local(set, step, a, xi, v);
 }
 
-/* Natural-map residual of the current P; xi receives xi = G P + c of every
- * row on the way. */
-/* The residual at P = set->percussion from its velocities xi, known. */
-BS_INLINE bs_real residual_at(const bs_contact_set *set, const bs_real *step, const bs_real *xi)
+/* The residual at P = set->percussion from its velocities xi, known, of a
+ * set of count contacts (a constant where it is inlined: the loops
+ * unrolled, and a step[] of that length visibly filled). */
+BS_INLINE bs_real residual_at(const bs_contact_set *set, int count, const bs_real *step, const bs_real *xi)
 {
     bs_real sum = BS_R(0.0);
     int a, r;
-    for (a = 0; a < set->count; ++a) {
+    for (a = 0; a < count; ++a) {
         const bs_real *p = &set->percussion[ROWS * a];
         bs_real projected[ROWS];
         prox(set, a, step[a], &xi[ROWS * a], p, projected);
@@ -246,6 +246,8 @@ BS_INLINE bs_real residual_at(const bs_contact_set *set, const bs_real *step, co
     return sum;
 }
 
+/* Natural-map residual of the current P; xi receives xi = G P + c of every
+ * row on the way. */
 static bs_real residual_of(const bs_contact_set *set, const bs_real *step, bs_real *xi)
 {
     bs_real sum = BS_R(0.0);
@@ -775,7 +777,7 @@ static void solve_pair(bs_contact_set *set, const bs_real *step, bs_goal goal, i
         pair_velocities(set, xi);
         if (pair_laws_hold(set, mode, xi)) {
             if (closed) { /* the exact solution of the right modes */
-                report->residual = measure ? residual_at(set, step, xi) : BS_R(-1.0);
+                report->residual = measure ? residual_at(set, 2, step, xi) : BS_R(-1.0);
                 report->converged = measure ? report->residual <= goal.tolerance : 1;
                 return;
             }
@@ -944,7 +946,7 @@ static void solve_one(bs_contact_set *set, const bs_solver_options *options, bs_
                     + set->delassus[r][1] * set->percussion[1]
 #endif
                 ;
-        report->residual = residual_at(set, step, xi);
+        report->residual = residual_at(set, 1, step, xi);
         report->converged = report->residual <= goal_of(set, 1, options, step).tolerance;
     } else {
         report->residual = BS_R(-1.0);

@@ -37,12 +37,16 @@ static inline bs_real bs_shape_offset(const bs_scene *scene, const bs_shape_cach
  * polynomial in t (BS_SHAPE_TERMS terms) of the piece polynomial there. */
 void bs_shape_expand(const bs_scene *scene, bs_real x, bs_shape_cache *cache);
 
-/* Value and t-derivative of sum_m c_m t^m, m < BS_SHAPE_TERMS (Horner). */
+/* Value and t-derivative of sum_m c_m t^m, m < BS_SHAPE_TERMS (Horner; the
+ * derivative's recurrence starts at its leading coefficient, not at 0 t + v). */
+#if BS_SHAPE_TERMS < 3
+#error "bs_shape_taylor needs BS_SHAPE_TERMS >= 3"
+#endif
 BS_INLINE void bs_shape_taylor(const bs_real *c, bs_real t, bs_real *value, bs_real *derivative)
 {
-    bs_real v = c[BS_SHAPE_TERMS - 1], d = BS_R(0.0);
+    bs_real v = c[BS_SHAPE_TERMS - 1] * t + c[BS_SHAPE_TERMS - 2], d = c[BS_SHAPE_TERMS - 1];
     int m;
-    for (m = BS_SHAPE_TERMS - 2; m >= 0; --m) {
+    for (m = BS_SHAPE_TERMS - 3; m >= 0; --m) {
         d = d * t + v;
         v = v * t + c[m];
     }

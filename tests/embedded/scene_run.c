@@ -131,7 +131,9 @@ static phase_result run(long steps, const char *phase)
         if (result.status != BS_OK)
             break;
         ++result.steps;
-        bs_sim_get_report(&sim, &report);
+        result.status = bs_sim_get_report(&sim, &report);
+        if (result.status != BS_OK)
+            break;
         for (active = report.active; active; active >>= 1)
             count += active & 1u;
         if (count > result.most)
