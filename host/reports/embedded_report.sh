@@ -80,10 +80,13 @@ profiled() {
     return 1
 }
 
-# core_sizes MAP -> "code rodata scene_rodata sim_bss scene_copy_bss" in bytes
+# core_sizes ELF -> "code rodata scene_rodata sim_bss scene_copy_bss" in bytes: the code
+# generated from core/ (code_bytes.sh), the rest from the link map beside the image. The
+# core's .rodata (the scene check's messages, ~550 B; its numeric constants are literal
+# pools, in its code) is found by its object file, which -flto does not keep: 0 there.
 core_sizes() {
-    awk -f host/reports/link_map_sections.awk "$1" | awk '
-        $3 ~ /\/core\// && $1 ~ /^\.text/ { code += $2; next }
+    code=$(sh host/reports/code_bytes.sh "$1" /core/)
+    awk -f host/reports/link_map_sections.awk "${1%.elf}.map" | awk -v code="$code" '
         $3 ~ /\/core\// && $1 ~ /^\.rodata/ { ro += $2; next }
         $1 == ".rodata.bs_compiled_scene" { scene += $2; next }
         $1 == ".bss.sim" { sim += $2; next }
@@ -356,7 +359,7 @@ while [ "$j" -le "$jobs" ]; do
     kind=$(word "$j" 4)
     case $kind in *-whole | *-O2) j=$((j + 1)); continue ;; esac
     base=$TMP/job-$j
-    set -- $(core_sizes "$(word "$j" 5 | sed 's/\.elf$/.map/')")
+    set -- $(core_sizes "$(word "$j" 5)")
     ram=$4
     [ "$5" -eq 0 ] || ram="$(($4 + $5)) ($4 + $5)"
     stack=$(val "$base.scene" stack) tight_stack=$(val "$base.tight" stack)
@@ -503,9 +506,9 @@ while [ "$j" -le "$jobs" ]; do
     solve=${kind%-O2} scene=$(word "$j" 2)
     twin=$(job cortex-m4f "$scene" float "$solve")
     [ -n "$twin" ] || { echo "embedded_report: no image at the default level for $(cat "$TMP/spec-$j")" >&2; exit 1; }
-    set -- $(core_sizes "$(word "$j" 5 | sed 's/\.elf$/.map/')")
+    set -- $(core_sizes "$(word "$j" 5)")
     code_o2=$1
-    set -- $(core_sizes "$(word "$twin" 5 | sed 's/\.elf$/.map/')")
+    set -- $(core_sizes "$(word "$twin" 5)")
     level_rows="$level_rows$(awk -v scene="$scene" -v solve="$solve" -v a="$code_o2 $(val "$TMP/job-$j.scene" mean_insn) $(val "$TMP/job-$j.scene" worst_insn) $(val "$TMP/job-$j.tight" worst_insn)" \
         -v b="$1 $(val "$TMP/job-$twin.scene" mean_insn) $(val "$TMP/job-$twin.scene" worst_insn) $(val "$TMP/job-$twin.tight" worst_insn)" 'BEGIN {
         split(a, x, " "); split(b, y, " ")

@@ -99,12 +99,13 @@ SUMMARY_AWK='
     }'
 val() { awk -v name="$2" '$1 == name { sub(/^[^ ]+ /, ""); print; found = 1; exit } END { if (!found) print "-" }' "$1"; }
 
-# sizes MAP ELF -> "core_code twin_code scene gains": code (.text) of the core and the
-# firmware's own files, constants of the scene and the gains
+# sizes ELF -> "core_code twin_code scene gains": code generated from the core and from
+# the firmware's own files (code_bytes.sh: by source line, what -flto inlines across them
+# counted where it came from), constants of the scene and the gains (the link map)
 sizes() {
-    awk -f host/reports/link_map_sections.awk "$1" | awk '
-        $3 ~ /\/core\/src\// && $1 ~ /^\.text/ { core += $2; next }
-        $3 ~ /\/twin\/twin_/ && $1 ~ /^\.text/ { twin += $2; next }
+    awk -f host/reports/link_map_sections.awk "${1%.elf}.map" |
+        awk -v core="$(sh host/reports/code_bytes.sh "$1" /core/src/)" \
+            -v twin="$(sh host/reports/code_bytes.sh "$1" /twin/twin_)" '
         $1 == ".rodata.bs_compiled_scene" { scene += $2; next }
         $1 == ".rodata.twin_gains" { gains += $2 }
         END { printf "%d %d %d %d\n", core, twin, scene, gains }'
@@ -187,7 +188,7 @@ while [ "$j" -le "$n" ]; do
     if [ "$target" = cortex-m4f ]; then budget=3360 unit= mhz=168; else budget=9600 unit=" (insn)" mhz=480; fi
     cost_rows="$cost_rows| $scene | $target | $variant | $(val "$s" samples) | $(val "$s" step_insn) | $(val "$s" step_worst_insn) | $(val "$s" step_opt) | $(val "$s" step_worst_opt) | $(val "$s" step_pess) | $(val "$s" step_worst_pess) | $(val "$s" producer_insn) | $(val "$s" producer_pess) | $(val "$s" sample_insn) | $(val "$s" sample)$unit | $budget | $(val "$s" over) | $(val "$s" backlog_$mhz) ($(val "$s" backlog_time_$mhz)) | $(awk -v k="$(val "$s" overflow)" -v dt=$DT 'BEGIN { if (k > 0) printf "%.3f s", k * dt; else print "never" }') | $(val "$s" s) |
 "
-    set -- $(sizes "$(echo "$elf" | sed 's/\.elf$/.map/')")
+    set -- $(sizes "$elf")
     ram_copy=$(( $(symbol_size "$elf" scene_in_ram) + $(symbol_size "$elf" gains_in_ram) ))
     set -- "$@" $(arm-none-eabi-size -A "$elf" | awk '$1 == ".text" || $1 == ".ARM.exidx" { flash += $2 } $1 == ".data" { flash += $2; ram += $2 } $1 == ".bss" { ram += $2 } END { print flash, ram }')
     memory_rows="$memory_rows| $scene | $target | $variant | $1 | $2 | $3 | $4 | $(symbol_size "$elf" twin) | $(symbol_size "$elf" obs) | $(symbol_size "$elf" fifo) | $(symbol_size "$elf" block) | $ram_copy | $5 | $6 | $(val "$s" stack) |
