@@ -12,8 +12,9 @@
 # -whole: the scene's whole run (t_end / dt steps) and nothing else.
 #
 # Measured per image (all Cortex-M4F runs with the cycle estimate, CM_CYCLES=1):
-#   flash   core code (.text of core/*.o) + constants (.rodata of core/*.o and the
-#           scene's bs_compiled_scene), from the linker map after --gc-sections
+#   flash   core code (the image's instructions whose source line is in core/:
+#           code_bytes.sh) + constants (.rodata of core/*.o, none with -flto, and the
+#           scene's bs_compiled_scene, from the linker map after --gc-sections)
 #   RAM     the bs_sim (the only RAM the core uses besides stack), plus the scene's
 #           copy in the ram variant
 #   stack   the deepest stack a phase used, measured by painting (includes the few
