@@ -214,6 +214,11 @@ plant() {
         --noise "$noise" $COMMISSIONED --friction "$mu_p" --restitution "$en_p" > "$tmp/${name}_$seed.ceil.json"
     "$BIN" twin "$w/twin_c.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.mu" --s0 0.35 --every 50 \
         --noise "$noise" $COMMISSIONED --estimate-friction "$FRICTION_GAIN" > "$tmp/${name}_$seed.mu.json"
+    if [ "${CEILING_MAPS:-0}" = 1 ]; then # the ceiling with its maps designed at the plant's mu and e_N too
+        { cat "$w/twin_c.ini"; printf '[contact]\nfriction = %s\nrestitution = %s\n' "$mu_p" "$en_p"; } > "$w/twin_m.ini"
+        "$BIN" twin "$w/twin_m.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.maps" --s0 0.35 --every 50 \
+            --noise "$noise" $COMMISSIONED > "$tmp/${name}_$seed.maps.json"
+    fi
     awk 'NR % 50 == 0 { print $1, $3, $4 }' "$w/plant.dat" > "$tmp/${name}_$seed.ref"
     # the plant's amplitude of w(4L/7): half its peak-to-peak over 0.1 s windows
     awk '{ k = int($1 * 10); if (k != last) { if (n) print (last + 0.5) / 10, (hi - lo) / 2; last = k; hi = $2; lo = $2; n = 0 }

@@ -1,0 +1,95 @@
+#!/bin/sh
+# twin_ceiling_maps.sh - does the fig8 ceiling lack the plant's friction in its
+# response maps? The section of docs/twin.md between <!-- twin-ceiling-maps -->
+# and <!-- /twin-ceiling-maps -->. Run through `make twin-ceiling-maps` (about
+# 15 minutes on 2 cores for 12 plants).
+#
+# The ceiling of `make twin-report` is told the plant's mu and e_N on the
+# running twin (--friction, --restitution), but its response maps, which turn
+# the lock-in's measurement into s, are designed with the scene's values. Here
+# each fig8 plant of twin_report.sh (the same draws, seed = plant number) is run
+# once more with CEILING_MAPS=1: a third commissioned twin whose scene holds the
+# plant's mu and e_N, so that its maps are designed with them too. Printed per
+# plant and pooled after 5 s: the fraction of time with |s_twin - s_plant| <=
+# 0.005 for the commissioned twin, the ceiling and the ceiling with the maps.
+#
+#   PLANTS=12 (default) OUT=docs/twin.md JOBS=$(nproc)
+#   TWIN_REPORT_DIR=DIR keeps the plants' files (TWIN_REPORT_REUSE=1: not run again)
+set -eu
+OUT=${OUT:-docs/twin.md}
+PLANTS=${PLANTS:-12}
+JOBS=${JOBS:-$(nproc)}
+if [ -n "${TWIN_REPORT_DIR:-}" ]; then
+    TMP=$TWIN_REPORT_DIR
+    mkdir -p "$TMP"
+else
+    TMP=$(mktemp -d)
+    trap 'rm -rf "$TMP"' EXIT
+fi
+. host/reports/provenance.sh
+stamp=$(provenance_stamp "make twin-ceiling-maps$( [ "$PLANTS" = 12 ] || printf ' PLANTS=%s' "$PLANTS")")
+
+k=1
+while [ "$k" -le "$PLANTS" ]; do
+    if [ "${TWIN_REPORT_REUSE:-0}" != 1 ] || [ ! -s "$TMP/fig8_$k.maps" ]; then
+        echo "fig8 fig8 120 none $k $TMP 126 10" # as twin_report.sh's fig8 plants
+    fi
+    k=$((k + 1))
+done > "$TMP/cases"
+if [ -s "$TMP/cases" ]; then
+    CEILING_MAPS=1 xargs -P "$JOBS" -L 1 sh host/reports/twin_report.sh --plant < "$TMP/cases"
+fi
+
+# the fraction of a twin's estimate rows after 5 s within 0.005 of the plant's s
+# (rows t,s_hat,...,s_true in columns 2 and 8, as twin_report.sh reads them)
+within() {
+    awk -F, '$1 + 0 > 5 { d = $2 - $8; if (d < 0) d = -d; n++; if (d <= 0.005) w++ }
+             END { printf "%.3f", n ? w / n : 0 }' "$@"
+}
+rows="" k=1 better=0 worse=0
+while [ "$k" -le "$PLANTS" ]; do
+    dm=$(cut -d' ' -f3 "$TMP/fig8_$k.draw")
+    c=$(within "$TMP/fig8_$k.comm") e=$(within "$TMP/fig8_$k.ceil") m=$(within "$TMP/fig8_$k.maps")
+    if awk -v a="$m" -v b="$e" 'BEGIN { exit !(a > b + 0.01) }'; then better=$((better + 1)); fi
+    if awk -v a="$m" -v b="$e" 'BEGIN { exit !(a < b - 0.01) }'; then worse=$((worse + 1)); fi
+    rows="$rows| $k | $(awk -v d="$dm" 'BEGIN { printf "%+.0f %%", 100 * d }') | $c | $e | $m |
+"
+    k=$((k + 1))
+done
+pooled() { # pooled SUFFIX: over every plant's rows
+    k=1 files=""
+    while [ "$k" -le "$PLANTS" ]; do files="$files $TMP/fig8_$k.$1"; k=$((k + 1)); done
+    # shellcheck disable=SC2086
+    within $files
+}
+pc=$(pooled comm) pe=$(pooled ceil) pm=$(pooled maps)
+
+cat > "$TMP/section.md" <<EOF
+$stamp
+
+### The ceiling with its maps designed at the plant's friction (fig8)
+
+Is it the response maps that keep the fig8 ceiling below the commissioned twin? The ceiling above
+is told the plant's mu and e_N on the running twin, but its maps are the scene's. Here each of the
+first $PLANTS fig8 plants (the draws of the report) runs a third commissioned twin whose scene
+holds the plant's mu and e_N, so that its maps are designed with them as well
+(host/reports/twin_ceiling_maps.sh). Fraction of the time after 5 s
+with |s_twin - s_plant| <= 0.005:
+
+| plant | mu against the scene's | commissioned | ceiling (told mu, e_N) | ceiling, maps at the plant's mu, e_N |
+|---|---|---|---|---|
+${rows}| pooled | | $pc | $pe | $pm |
+
+The maps designed at the plant's friction and restitution do better than the ceiling by more than a
+point on $better of $PLANTS plants and worse on $worse.
+EOF
+if grep -q '^<!-- twin-ceiling-maps -->$' "$OUT" 2>/dev/null; then
+    awk -v section="$TMP/section.md" '
+        $0 == "<!-- twin-ceiling-maps -->" { print; while ((getline line < section) > 0) print line; skip = 1; next }
+        $0 == "<!-- /twin-ceiling-maps -->" { skip = 0 }
+        !skip' "$OUT" > "$TMP/out.md"
+    cat "$TMP/out.md" > "$OUT"
+else
+    cp "$TMP/section.md" "$OUT"
+fi
+echo "twin_ceiling_maps: wrote $OUT" >&2
