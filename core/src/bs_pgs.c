@@ -149,10 +149,10 @@ BS_INLINE void prox(const bs_contact_set *set, int a, bs_real step, const bs_rea
 }
 
 /* Contact a's exact solution (the candidates of the header comment) against
- * v, the velocity of its rows without its own percussion; xi, its velocity
- * at the present P, is what the prox fall-back steps from. Returns 1, or 0
- * when it fell back (no candidate held). */
-BS_INLINE int solve_local(bs_contact_set *set, const bs_real *step, int a, const bs_real *xi, const bs_real *v)
+ * v, the velocity of its rows without its own percussion, into its P.
+ * Returns 1, or 0 when no candidate held: P is then unchanged, and the
+ * caller falls back to the prox update (fall_back). */
+BS_INLINE int solve_local(bs_contact_set *set, int a, const bs_real *v)
 {
     bs_real *p = &set->percussion[ROWS * a];
     const bs_real g_nn = set->delassus[ROWS * a][ROWS * a];
@@ -201,32 +201,46 @@ BS_INLINE int solve_local(bs_contact_set *set, const bs_real *step, int a, const
             }
         }
     }
-    prox(set, a, step[a], xi, p, p); /* fall-back, see the header comment */
     return 0;
 #else
-    (void)step;
-    (void)xi;
     p[0] = v_n >= BS_R(0.0) ? BS_R(0.0) : -v_n / g_nn;
     return 1;
 #endif
 }
 
+/* The prox update of contact a from xi, its velocity at the present P: the
+ * fall-back where solve_local found no candidate (header comment). Returns 0. */
+BS_INLINE int fall_back(bs_contact_set *set, const bs_real *step, int a, const bs_real *xi)
+{
+    bs_real *p = &set->percussion[ROWS * a];
+    prox(set, a, step[a], xi, p, p);
+    return 0;
+}
+
 /* Exact solution of contact a's problem with the other contacts frozen
- * (solve_local against v = xi - G_aa P_a). Returns 1, or 0 when it fell back
- * to the prox update (no candidate held). */
-static int solve_contact(bs_contact_set *set, const bs_real *step, int a)
+ * (solve_local against v = xi - G_aa P_a), xi its velocity at the present
+ * P. Returns 1, or 0 when it fell back to the prox update (no candidate
+ * held). */
+BS_INLINE int solve_contact_at(bs_contact_set *set, const bs_real *step, int a, const bs_real *xi)
 {
     const bs_real *p = &set->percussion[ROWS * a];
     const bs_real *g_n = set->delassus[ROWS * a];
-    bs_real xi[ROWS], v[ROWS];
+    bs_real v[ROWS];
 
-    velocity(set, a, xi);
     v[0] = xi[0] - g_n[ROWS * a] * p[0];
 #if BS_WITH_FRICTION
     v[0] -= g_n[2 * a + 1] * p[1];
     v[1] = xi[1] - set->delassus[2 * a + 1][2 * a] * p[0] - set->delassus[2 * a + 1][2 * a + 1] * p[1];
 #endif
-    return solve_local(set, step, a, xi, v);
+    return solve_local(set, a, v) || fall_back(set, step, a, xi);
+}
+
+/* The same with xi not known: a Gauss-Seidel sweep's visit. */
+static int solve_contact(bs_contact_set *set, const bs_real *step, int a)
+{
+    bs_real xi[ROWS];
+    velocity(set, a, xi);
+    return solve_contact_at(set, step, a, xi);
 }
 
 /* The residual at P = set->percussion from its velocities xi, known, of a
@@ -465,7 +479,7 @@ static int next_mode(bs_contact_set *set, const bs_real *step, int a, int mode, 
     int r, local;
     for (r = 0; r < ROWS; ++r)
         saved[r] = p[r];
-    solve_contact(set, step, a);
+    solve_contact_at(set, step, a, xi);
     local = mode_of(set, a);
     for (r = 0; r < ROWS; ++r)
         p[r] = saved[r];
@@ -510,16 +524,23 @@ static int next_modes(bs_contact_set *set, const bs_real *step, int *mode, const
     return broken;
 }
 
-/* The mode of contact a to start from: the one its warm start shows, or
- * for a contact without a percussion sticking if it approaches (under the
- * others' warm percussions), else lifting off. */
-BS_INLINE int warm_mode(const bs_contact_set *set, int a)
+/* sum_a |P_N,a| of the warm start, which warm_mode weighs a P_N against. */
+BS_INLINE bs_real warm_total(const bs_contact_set *set)
 {
-    const bs_real *p = &set->percussion[ROWS * a];
     bs_real total = BS_R(0.0);
     int b;
     for (b = 0; b < set->count; ++b)
         total += bs_fabs(set->percussion[ROWS * b]);
+    return total;
+}
+
+/* The mode of contact a to start from: the one its warm start shows, or
+ * for a contact without a percussion sticking if it approaches (under the
+ * others' warm percussions), else lifting off. total: warm_total. */
+BS_INLINE int warm_mode(const bs_contact_set *set, int a, bs_real total)
+{
+    const bs_real *p = &set->percussion[ROWS * a];
+    int b;
     /* a P_N within rounding (16 eps) of 0 against the set's total is 0, as
      * the step leaves it after a take-off (again a warm start from elsewhere
      * may not) */
@@ -751,9 +772,10 @@ static void solve_pair(bs_contact_set *set, const bs_real *step, bs_goal goal, i
     bs_real best_residual = BS_R(-1.0), trial_residual;
     unsigned tried = 0; /* bit MODES * mode[0] + mode[1]: that pair solved */
     int mode[2], index, j, closed;
+    const bs_real total = warm_total(set);
 
-    mode[0] = warm_mode(set, 0);
-    mode[1] = warm_mode(set, 1);
+    mode[0] = warm_mode(set, 0, total);
+    mode[1] = warm_mode(set, 1, total);
     report->sweeps = 0;
     for (j = 0; j < 2 * ROWS; ++j) /* best: replaced by the first trial */
         best[j] = set->percussion[j];
@@ -782,7 +804,7 @@ static void solve_pair(bs_contact_set *set, const bs_real *step, bs_goal goal, i
                 return;
             }
             /* a dependent column may have left an equation unmet */
-            trial_residual = residual_of(set, step, xi);
+            trial_residual = residual_at(set, 2, step, xi);
             if (trial_residual <= goal.tolerance) {
                 report->residual = trial_residual;
                 report->converged = 1;
@@ -790,7 +812,7 @@ static void solve_pair(bs_contact_set *set, const bs_real *step, bs_goal goal, i
             }
         } else {
             /* at rounding's floor it is the solution whatever the signs */
-            trial_residual = residual_of(set, step, xi);
+            trial_residual = residual_at(set, 2, step, xi);
             if (trial_residual <= goal.exact) {
                 report->residual = trial_residual;
                 report->converged = trial_residual <= goal.tolerance;
@@ -865,9 +887,10 @@ static void solve_many(bs_contact_set *set, const bs_real *step, bs_goal goal, i
 #if BS_WITH_SUBSPACE
     int mode[BS_MAX_CONTACTS];
     int budget = SYSTEMS_MAX;
+    const bs_real total = warm_total(set);
 
     for (a = 0; a < set->count; ++a)
-        mode[a] = warm_mode(set, a);
+        mode[a] = warm_mode(set, a, total);
     report->residual = residual(set, step);
     if (report->residual <= goal.tolerance) { /* the warm start stands */
         report->sweeps = 0;
@@ -925,27 +948,30 @@ BS_INLINE bs_goal goal_of(const bs_contact_set *set, int count, const bs_solver_
     return goal;
 }
 
-/* One contact: exact by itself, v = c; the residual only when asked. */
-static void solve_one(bs_contact_set *set, const bs_solver_options *options, bs_step_report *report)
+/* xi = G P + c of a lone contact at its present P. */
+BS_INLINE void one_velocity(const bs_contact_set *set, bs_real *xi)
 {
-    bs_real step[1], xi[ROWS];
-    int exact, r;
-    step_sizes(set, 1, step);
+    int r;
     for (r = 0; r < ROWS; ++r)
         xi[r] = set->free_velocity[r] + set->delassus[r][0] * set->percussion[0]
 #if BS_WITH_FRICTION
                 + set->delassus[r][1] * set->percussion[1]
 #endif
             ;
-    exact = solve_local(set, step, 0, xi, set->free_velocity);
+}
+
+/* One contact: exact by itself, v = c (xi at the warm start for the
+ * fall-back); the residual only when asked. */
+static void solve_one(bs_contact_set *set, const bs_solver_options *options, bs_step_report *report)
+{
+    bs_real step[1], xi[ROWS];
+    int exact;
+    step_sizes(set, 1, step);
+    one_velocity(set, xi);
+    exact = solve_local(set, 0, set->free_velocity) || fall_back(set, step, 0, xi);
     report->sweeps = 1;
     if (options->measure_residual) {
-        for (r = 0; r < ROWS; ++r)
-            xi[r] = set->free_velocity[r] + set->delassus[r][0] * set->percussion[0]
-#if BS_WITH_FRICTION
-                    + set->delassus[r][1] * set->percussion[1]
-#endif
-                ;
+        one_velocity(set, xi);
         report->residual = residual_at(set, 1, step, xi);
         report->converged = report->residual <= goal_of(set, 1, options, step).tolerance;
     } else {
