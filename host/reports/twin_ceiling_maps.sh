@@ -1,7 +1,8 @@
 #!/bin/sh
 # twin_ceiling_maps.sh - does the fig8 ceiling lack the plant's friction in its
 # response maps? The section of docs/twin.md between <!-- twin-ceiling-maps -->
-# and <!-- /twin-ceiling-maps -->. Run through `make twin-ceiling-maps` (about
+# and <!-- /twin-ceiling-maps --> (an OUT without them is refused; a new OUT is
+# written whole). Run through `make twin-ceiling-maps` (about
 # 15 minutes on 2 cores for 12 plants).
 #
 # The ceiling of `make twin-report` is told the plant's mu and e_N on the
@@ -83,7 +84,12 @@ ${rows}| pooled | | $pc | $pe | $pm |
 The maps designed at the plant's friction and restitution do better than the ceiling by more than a
 point on $better of $PLANTS plants and worse on $worse.
 EOF
-if grep -q '^<!-- twin-ceiling-maps -->$' "$OUT" 2>/dev/null; then
+if [ -e "$OUT" ] && ! grep -q '^<!-- twin-ceiling-maps -->$' "$OUT"; then
+    echo "twin_ceiling_maps: $OUT has no <!-- twin-ceiling-maps --> line; not overwritten (the section is in $TMP/section.md)" >&2
+    trap - EXIT
+    exit 1
+fi
+if [ -e "$OUT" ]; then
     awk -v section="$TMP/section.md" '
         $0 == "<!-- twin-ceiling-maps -->" { print; while ((getline line < section) > 0) print line; skip = 1; next }
         $0 == "<!-- /twin-ceiling-maps -->" { skip = 0 }
