@@ -256,7 +256,7 @@ VG := valgrind -q --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=d
 # The test programs run under valgrind whole, but VG_SUBSET: those without
 # their longest cases (tests/fuzz/vg_NAME.c, the same source without the
 # cases it lists and says why; docs/robustness.md section 1).
-VG_SUBSET := test_sim test_observer test_contact
+VG_SUBSET := test_sim test_observer test_contact test_friction test_shape
 VG_TESTS := $(filter-out $(VG_SUBSET),$(TESTS))
 VG_OBJ := $(BUILD)/double
 

@@ -11,6 +11,9 @@
 #                       plant (perturbed, noisy signals) -> docs/twin.md, "Closed loop"
 #   make twin-ceiling-maps  the fig8 ceiling once more with its response maps designed at
 #                       the plant's friction -> docs/twin.md, "The ceiling with its maps"
+#   make twin-step      the high branch's climb against friction at two steps, and the fig8
+#                       plants with the twin at 2e-5 s and 1e-5 s -> docs/twin.md,
+#                       "The twin's step under friction"
 #   make harvester-report  harvested power over a load sweep, self-tuning under
 #                       electrical damping, a moving ambient frequency -> docs/harvester.md
 #   make baseline-check [BASELINE=COMMIT|this] [THIS_ARGS='run options'] [OUT=docs/x.md] [TOLERANCE=2]
@@ -29,14 +32,14 @@
 #
 # `make test` also runs sweep-check (host/reports/figures/check_sweep.sh).
 
-.PHONY: fig6-report accuracy stability bench baseline-check harvester-report twin-report twin-ceiling-maps figures \
+.PHONY: fig6-report accuracy stability bench baseline-check harvester-report twin-report twin-ceiling-maps twin-step figures \
         sweep-check deps-figures \
         provenance-builds
 
 # Every report stamps what it writes with the state hashes of both precisions'
 # CLI (host/reports/provenance.sh), and a page of measured cost with the compiler
 # and flags, which make passes to the scripts here.
-REPORTS := fig6-report accuracy stability bench baseline-check harvester-report twin-report twin-ceiling-maps figures maps \
+REPORTS := fig6-report accuracy stability bench baseline-check harvester-report twin-report twin-ceiling-maps twin-step figures maps \
            embedded-report twin-firmware-report
 export PROVENANCE_CC := $(strip $(CC))
 export PROVENANCE_CFLAGS := $(strip $(CFLAGS))
@@ -85,6 +88,11 @@ twin-ceiling-maps: $(BUILD)/bs-reference
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
 	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
 	sh host/reports/twin_ceiling_maps.sh
+
+twin-step: $(BUILD)/bs-reference
+	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
+	sh host/reports/twin_step.sh
 
 BASELINE ?= 2326ca8
 baseline-check:

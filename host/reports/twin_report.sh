@@ -44,6 +44,10 @@ CORRECTED=${CORRECTED-}
 # do), and "estimating", which estimates mu as it runs (docs/twin.md,
 # "Friction"; --estimate-friction at this gain).
 FRICTION_GAIN=${FRICTION_GAIN:-30}
+# The closed loop's step [s]: the twin's, the plant's outer step (its inner
+# step stays 5e-6 s) and the measured signals' sample period (2e-5 s, the
+# scenes'; 1e-5 s: "The twin's step under friction", docs/twin.md)
+TWIN_DT=${TWIN_DT:-2e-5}
 here=$(pwd)
 
 # mssp2023.ini's values, which the scenes below do not override
@@ -183,6 +187,11 @@ plant() {
     } > "$w/twin.ini"
     set -- $(commission "$w" "$seed" "$load")
     e_twin=$1 th_twin=$3 burst_amp=$4
+    # TWIN_DT: the closed loop's step (the twin's, the plant's outer step and
+    # the signals' sample period; commissioning above keeps the scene's)
+    if [ "$TWIN_DT" != 2e-5 ]; then
+        for f in plant twin; do printf '[numerics]\ndt = %s\n' "$TWIN_DT" >> "$w/$f.ini"; done
+    fi
     scale=$(awk -v e="$E" -v x="$e_twin" 'BEGIN { printf "%.6f", sqrt(x / e) }')
     th_scale=$(awk -v t="$THETA" -v x="$th_twin" 'BEGIN { printf "%.6f", x / t }')
     {
@@ -192,7 +201,7 @@ plant() {
     } > "$w/twin_c.ini"
     # the plant, every outer step (2e-5 s): t, w(4L/7), s, power
     mkfifo "$w/fifo"
-    "$REF" run "$w/plant.ini" --substeps 4 --t-end "$t_end" --out "$w/fifo" --every 1 > "$w/ref.json" &
+    "$REF" run "$w/plant.ini" --substeps "$(awk -v d="$TWIN_DT" 'BEGIN { printf "%.0f", d / 5e-6 }')" --t-end "$t_end" --out "$w/fifo" --every 1 > "$w/ref.json" &
     awk -F, 'NR == 1 { pc = 0; for (i = 1; i <= NF; ++i) if ($i == "p") pc = i; next }
              { print $1, $2, $3, (pc ? $pc : 0) }' "$w/fifo" > "$w/plant.dat"
     wait
@@ -201,7 +210,7 @@ plant() {
     # RMS and largest values, then noise and quantisation
     stats=$(awk '$1 > 0 { a = 0; s2 += $2 * $2; n++; if ($2 > m) m = $2; if (-$2 > m) m = -$2 } END { printf "%.9g %.9g", sqrt(s2 / n), m }' "$w/plant.dat")
     awk -v seed="$((seed + 1000))" -v stats="$stats" -v scene="$here/configs/$scene.ini" -v schedule="$(schedule_of "$scene")" \
-        -v f0="$f0" -v a0="$a0" -v dt=2e-5 -f host/reports/twin_signals.awk \
+        -v f0="$f0" -v a0="$a0" -v dt="$TWIN_DT" -f host/reports/twin_signals.awk \
         "$w/plant.dat" > "$w/measured.csv"
     noise=$(sed -n 's/^# noise = \([^ ]*\).*/\1/p' "$w/measured.csv")
     "$BIN" twin "$w/twin.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.est" --s0 0.35 --every 50 \
