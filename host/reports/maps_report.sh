@@ -119,8 +119,6 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
             }' "$DIR/map.csv"
     done
 } >"$DIR-numbers.md"
-awk -v numbers="$DIR-numbers.md" '
-    /<!-- maps-numbers -->/ { print; while ((getline line < numbers) > 0) print line; skip = 1; next }
-    /<!-- \/maps-numbers -->/ { skip = 0 }
-    !skip' "$DOC" >"$DOC.tmp" && mv "$DOC.tmp" "$DOC"
+. host/reports/section.sh
+write_section "$DOC" maps-numbers "$DIR-numbers.md"
 echo "maps: wrote $FIG/map_*.png and the numbers of $DOC" >&2

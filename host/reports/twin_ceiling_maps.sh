@@ -84,18 +84,6 @@ ${rows}| pooled | | $pc | $pe | $pm |
 The maps designed at the plant's friction and restitution do better than the ceiling by more than a
 point on $better of $PLANTS plants and worse on $worse.
 EOF
-if [ -e "$OUT" ] && ! grep -q '^<!-- twin-ceiling-maps -->$' "$OUT"; then
-    echo "twin_ceiling_maps: $OUT has no <!-- twin-ceiling-maps --> line; not overwritten (the section is in $TMP/section.md)" >&2
-    trap - EXIT
-    exit 1
-fi
-if [ -e "$OUT" ]; then
-    awk -v section="$TMP/section.md" '
-        $0 == "<!-- twin-ceiling-maps -->" { print; while ((getline line < section) > 0) print line; skip = 1; next }
-        $0 == "<!-- /twin-ceiling-maps -->" { skip = 0 }
-        !skip' "$OUT" > "$TMP/out.md"
-    cat "$TMP/out.md" > "$OUT"
-else
-    cp "$TMP/section.md" "$OUT"
-fi
+. host/reports/section.sh
+write_section "$OUT" twin-ceiling-maps "$TMP/section.md" || { trap - EXIT; exit 1; }
 echo "twin_ceiling_maps: wrote $OUT" >&2

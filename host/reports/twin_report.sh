@@ -24,7 +24,7 @@
 #   sh host/reports/twin_report.sh                 the report
 #   sh host/reports/twin_report.sh --plant ARGS    one plant (used by the report)
 set -eu
-OUT=${OUT:-docs/twin.md}  # between its twin-report markers (a file without them: written whole)
+OUT=${OUT:-docs/twin.md}  # between its twin-report markers (host/reports/section.sh: a page without them is refused, a new file written whole)
 FIG=${FIG:-docs/figures}
 PLANTS=${PLANTS:-32}       # fig6 (with a resistor: power too)
 PLANTS_OTHER=${PLANTS_OTHER:-8} # fig8
@@ -199,7 +199,7 @@ plant() {
         printf '[beam]\nyoungs_modulus = %s\n' "$e_twin"
         [ "$load" = none ] || printf '[transducer]\ncoupling = %s\n' "$th_twin"
     } > "$w/twin_c.ini"
-    # the plant, every outer step (2e-5 s): t, w(4L/7), s, power
+    # the plant, every outer step (TWIN_DT): t, w(4L/7), s, power
     mkfifo "$w/fifo"
     "$REF" run "$w/plant.ini" --substeps "$(awk -v d="$TWIN_DT" 'BEGIN { printf "%.0f", d / 5e-6 }')" --t-end "$t_end" --out "$w/fifo" --every 1 > "$w/ref.json" &
     awk -F, 'NR == 1 { pc = 0; for (i = 1; i <= NF; ++i) if ($i == "p") pc = i; next }
@@ -549,13 +549,6 @@ within 5 % in 97 % of the windows without a jump.
 
 ![the friction estimate against time on every fig6 and fig8 plant, and s on the fig6 plants with the most and the least friction](figures/twin_friction.png)
 EOF
-if grep -q '^<!-- twin-report -->$' "$OUT" 2>/dev/null; then
-    awk -v report="$TMP/report.md" '
-        $0 == "<!-- twin-report -->" { print; while ((getline line < report) > 0) print line; skip = 1; next }
-        $0 == "<!-- /twin-report -->" { skip = 0 }
-        !skip' "$OUT" > "$TMP/out.md"
-    cat "$TMP/out.md" > "$OUT"
-else
-    cp "$TMP/report.md" "$OUT"
-fi
+. host/reports/section.sh
+write_section "$OUT" twin-report "$TMP/report.md" || { trap - EXIT; exit 1; }
 echo "twin_report: wrote $OUT" >&2

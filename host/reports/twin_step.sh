@@ -168,18 +168,6 @@ measured s (s_hat + s_error) less the plant's, at both steps:
 |---|---|---|---|---|
 ${bias_rows}
 EOF
-if [ -e "$OUT" ] && ! grep -q '^<!-- twin-step -->$' "$OUT"; then
-    echo "twin_step: $OUT has no <!-- twin-step --> line; not overwritten (the section is in $TMP/section.md)" >&2
-    trap - EXIT
-    exit 1
-fi
-if [ -e "$OUT" ]; then
-    awk -v section="$TMP/section.md" '
-        $0 == "<!-- twin-step -->" { print; while ((getline line < section) > 0) print line; skip = 1; next }
-        $0 == "<!-- /twin-step -->" { skip = 0 }
-        !skip' "$OUT" > "$TMP/out.md"
-    cat "$TMP/out.md" > "$OUT"
-else
-    cp "$TMP/section.md" "$OUT"
-fi
+. host/reports/section.sh
+write_section "$OUT" twin-step "$TMP/section.md" || { trap - EXIT; exit 1; }
 echo "twin_step: wrote $OUT" >&2
