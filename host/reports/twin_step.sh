@@ -102,12 +102,16 @@ pooled() { # pooled DT SUFFIX: over every plant's rows
     # shellcheck disable=SC2086
     within $files
 }
-# high FILE: "share bias" over a twin's rows after 5 s: the share of the time with
-# the measured amplitude (column 4) above 0.7 h (the high branch), and there the
-# mean of its measured s (s_hat + s_error, columns 2 and 10) less the plant's
+# high FILE: "share bias within_high within_low" over a twin's rows after 5 s: the
+# share of the time with the measured amplitude (column 4) above 0.7 h (the high
+# branch), there the mean of its measured s (s_hat + s_error, columns 2 and 10)
+# less the plant's, and the fraction within 0.005 on the high branch and on the
+# low one (amplitude below 0.25 h)
 high() {
-    awk -F, '$1 + 0 > 5 { n++; if ($4 > 7e-4) { h++; b += $2 + $10 - $8 } }
-             END { printf "%.2f %+.4f", h / n, h ? b / h : 0 }' "$1"
+    awk -F, '$1 + 0 > 5 { n++; d = $2 - $8; if (d < 0) d = -d
+                          if ($4 > 7e-4) { h++; b += $2 + $10 - $8; wh += d <= 0.005 }
+                          else if ($4 < 2.5e-4) { l++; wl += d <= 0.005 } }
+             END { printf "%.2f %+.4f %.3f %.3f", h / n, h ? b / h : 0, h ? wh / h : 0, l ? wl / l : 0 }' "$1"
 }
 rows="" bias_rows="" k=1 below_20=0 below_10=0
 while [ "$k" -le "$PLANTS" ]; do
@@ -123,7 +127,7 @@ while [ "$k" -le "$PLANTS" ]; do
     rows="$rows$row
 "
     set -- $(high "$TMP/dt2e-5/fig8_$k.ceil") $(high "$TMP/dt1e-5/fig8_$k.ceil")
-    bias_rows="$bias_rows| $k | $(cut -d' ' -f9 "$TMP/dt2e-5/fig8_$k.draw" | awk '{ printf "%.3f", $1 }') | $1 | $2 | $4 |
+    bias_rows="$bias_rows| $k | $(cut -d' ' -f9 "$TMP/dt2e-5/fig8_$k.draw" | awk '{ printf "%.3f", $1 }') | $1 | $3 | $4 | $2 | $6 |
 "
     k=$((k + 1))
 done
@@ -160,12 +164,13 @@ ${rows}${pooled_row}
 Plants on which the estimating twin is more than 3 points below its ceiling: $below_20 of $PLANTS
 at 2e-5 s, $below_10 at 1e-5 s.
 
-**The high branch in closed loop.** Per plant, the ceiling's share of the time after 5 s with
-the measured amplitude above 0.7 h (the high branch; at 2e-5 s), and there the mean of its
-measured s (s_hat + s_error) less the plant's, at both steps:
+**The branches in closed loop.** Per plant, for the ceiling at 2e-5 s: the share of the time
+after 5 s with the measured amplitude above 0.7 h (the high branch), the fraction of it within
+0.005 of the plant's s, the same on the low branch (amplitude below 0.25 h), and on the high
+branch the mean of the measured s (s_hat + s_error) less the plant's, at both steps:
 
-| plant | mu | high branch, share of the time | measured s - s_plant there, 2e-5 s | 1e-5 s |
-|---|---|---|---|---|
+| plant | mu | high branch, share of the time | within 0.005 there | within 0.005 on the low branch | measured s - s_plant on the high branch, 2e-5 s | 1e-5 s |
+|---|---|---|---|---|---|---|
 ${bias_rows}
 EOF
 . host/reports/section.sh
