@@ -2,7 +2,7 @@
 # twin_step.sh - is it the twin's step that keeps the fig8 ceiling low? The
 # section of docs/twin.md between <!-- twin-step --> and <!-- /twin-step -->
 # (an OUT without them is refused; a new OUT is written whole). Run through
-# `make twin-step` (about 45 minutes on 2 cores).
+# `make twin-step` (about 35 minutes on 2 cores).
 #
 # 1. The slider's climb on the high branch against friction: fig8 (nominal
 #    otherwise) at mu = MUS, 120 s, run by the independent reference at
@@ -51,10 +51,12 @@ done | while read -r line; do
     out=${line##* }
     if [ "${TWIN_REPORT_REUSE:-0}" != 1 ] || [ ! -s "$out" ]; then echo "$line > /dev/null"; fi
 done > "$TMP/climb/commands"
-# shellcheck disable=SC2016
 [ ! -s "$TMP/climb/commands" ] || xargs -P "$JOBS" -I CMD sh -c CMD < "$TMP/climb/commands"
 
-# climb FILE: "speed climbs" (rows t,w_sensor,s,... every 1 ms)
+# climb FILE: "speed climbs" (rows t,w_sensor,s,... every 1 ms): per 0.1 s window s
+# and the amplitude; a climb is counted from the first window at s >= 0.26 to the
+# first at s >= 0.30 with the amplitude above 0.4 h all along, once per stay on the
+# high branch (the count re-armed by a window below 0.4 h)
 climb() {
     awk -F, 'NR > 1 { k = int($1 * 10); if (k != last) { if (n) print s, (hi - lo) / 2; last = k; hi = $2; lo = $2; n = 0 }
                       if ($2 > hi) hi = $2; if ($2 < lo) lo = $2; s = $3; n++ }' "$1" |
