@@ -2,10 +2,9 @@
  * (tests/fuzz/vg_subset.h). The case left out (about 30 s of the program's
  * 113 s under valgrind) runs the twin and its plant through the same run()
  * as the case that follows a plant with more friction, on the scene's own
- * friction. Of the
- * lines of core/ and host/lib it reaches (gcov), one is not reached by the
- * kept cases: the position correction of an s error above its deadband,
- * which vg_test_observer's tracking case runs. */
+ * friction. Of the lines of core/ and host/lib it reaches (gcov), one is not
+ * reached by the kept cases: the position correction of an s error above
+ * its deadband, which vg_test_observer's tracking case runs. */
 static const char *const vg_too_long[] = {
     "test_friction_does_not_chase_noise_on_the_high_branch",
 };
