@@ -92,28 +92,12 @@ for dt in 2e-5 1e-5; do
     fi
 done
 
-# the fraction of a twin's estimate rows after 5 s within 0.005 of the plant's s
-# (rows t,s_hat,...,s_true in columns 2 and 8, as twin_report.sh reads them)
-within() {
-    awk -F, '$1 + 0 > 5 { d = $2 - $8; if (d < 0) d = -d; n++; if (d <= 0.005) w++ }
-             END { printf "%.3f", n ? w / n : 0 }' "$@"
-}
+. host/reports/twin_rows.sh
 pooled() { # pooled DT SUFFIX: over every plant's rows
     k=1 files=""
     while [ "$k" -le "$PLANTS" ]; do files="$files $TMP/dt$1/fig8_$k.$2"; k=$((k + 1)); done
     # shellcheck disable=SC2086
     within $files
-}
-# high FILE: "share bias within_high within_low" over a twin's rows after 5 s: the
-# share of the time with the measured amplitude (column 4) above 0.7 h (the high
-# branch), there the mean of its measured s (s_hat + s_error, columns 2 and 10)
-# less the plant's, and the fraction within 0.005 on the high branch and on the
-# low one (amplitude below 0.25 h)
-high() {
-    awk -F, '$1 + 0 > 5 { n++; d = $2 - $8; if (d < 0) d = -d
-                          if ($4 > 7e-4) { h++; b += $2 + $10 - $8; wh += d <= 0.005 }
-                          else if ($4 < 2.5e-4) { l++; wl += d <= 0.005 } }
-             END { printf "%.2f %+.4f %.3f %.3f", h / n, h ? b / h : 0, h ? wh / h : 0, l ? wl / l : 0 }' "$1"
 }
 rows="" bias_rows="" k=1 below_20=0 below_10=0
 while [ "$k" -le "$PLANTS" ]; do
@@ -128,7 +112,7 @@ while [ "$k" -le "$PLANTS" ]; do
     done
     rows="$rows$row
 "
-    set -- $(high "$TMP/dt2e-5/fig8_$k.ceil") $(high "$TMP/dt1e-5/fig8_$k.ceil")
+    set -- $(branches "$TMP/dt2e-5/fig8_$k.ceil") $(branches "$TMP/dt1e-5/fig8_$k.ceil")
     bias_rows="$bias_rows| $k | $(cut -d' ' -f9 "$TMP/dt2e-5/fig8_$k.draw" | awk '{ printf "%.3f", $1 }') | $1 | $3 | $4 | $2 | $6 |
 "
     k=$((k + 1))

@@ -1,0 +1,21 @@
+# twin_rows.sh - sourced by the fig8 studies of host/reports (twin_ceiling_maps.sh,
+# twin_step.sh): statistics of a twin's estimate rows as `beamslider twin --out`
+# writes them (t,s_hat,s_sigma,amplitude,power,y,y_hat,s_true,phase_error,
+# s_error,...) after the first 5 s, as twin_report.sh reads them. Sourced, not run.
+
+# within FILE...: the fraction of the rows with |s_twin - s_plant| <= 0.005
+within() {
+    awk -F, '$1 + 0 > 5 { d = $2 - $8; if (d < 0) d = -d; n++; if (d <= 0.005) w++ }
+             END { printf "%.3f", n ? w / n : 0 }' "$@"
+}
+
+# branches FILE: "share bias within_high within_low": the share of the rows with the
+# measured amplitude above 0.7 h (the high branch), there the mean of the measured
+# s (s_hat + s_error) less the plant's, and the fraction within 0.005 on the high
+# branch and on the low one (amplitude below 0.25 h; h = 1 mm)
+branches() {
+    awk -F, '$1 + 0 > 5 { n++; d = $2 - $8; if (d < 0) d = -d
+                          if ($4 > 7e-4) { h++; b += $2 + $10 - $8; wh += d <= 0.005 }
+                          else if ($4 < 2.5e-4) { l++; wl += d <= 0.005 } }
+             END { printf "%.2f %+.4f %.3f %.3f", h / n, h ? b / h : 0, h ? wh / h : 0, l ? wl / l : 0 }' "$1"
+}
