@@ -6,8 +6,8 @@
 #
 # 1. The slider's climb on the high branch against friction: fig8 (nominal
 #    otherwise) at mu = MUS, 120 s, run by the independent reference at
-#    dt = 5e-6 s and by the core (double) at dt = 2e-5 s (the scenes') and
-#    1e-5 s. The climb speed is ds/dt from s = 0.26 to s = 0.30 while the
+#    dt = 5e-6 s and by the core (double) at dt = 2e-5 s (the scenes'), at
+#    2e-5 s prewarped and at 1e-5 s. The climb speed is ds/dt from s = 0.26 to s = 0.30 while the
 #    beam is on the high branch (amplitude of w(4L/7), half its peak-to-peak
 #    over 0.1 s, above 0.4 h throughout: at s = 0.26 it is near the 0.7 h of
 #    the twin report's branch test), averaged over the climbs of the run.
@@ -16,7 +16,8 @@
 #    the signals' sample period) at 2e-5 s and at 1e-5 s (twin_report.sh
 #    --plant, TWIN_DT); commissioning is the same at both. Fraction of the
 #    time after 5 s with |s_twin - s_plant| <= 0.005 for the commissioned
-#    twin, the ceiling (told mu, e_N) and the estimating twin.
+#    twin, the ceiling (told mu, e_N) and the estimating twin; per plant, the
+#    ceiling on each branch (twin_rows.sh's branches).
 #
 #   PLANTS=12 MUS="0.18 0.20 0.22 0.24 0.25" OUT=docs/twin.md JOBS=$(nproc)
 #   TWIN_REPORT_DIR=DIR keeps the files (DIR/dt2e-5, DIR/dt1e-5, DIR/climb);
