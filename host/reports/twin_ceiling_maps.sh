@@ -20,13 +20,8 @@ set -eu
 OUT=${OUT:-docs/twin.md}
 PLANTS=${PLANTS:-12}
 JOBS=${JOBS:-$(nproc)}
-if [ -n "${TWIN_REPORT_DIR:-}" ]; then
-    TMP=$TWIN_REPORT_DIR
-    mkdir -p "$TMP"
-else
-    TMP=$(mktemp -d)
-    trap 'rm -rf "$TMP"' EXIT
-fi
+. host/reports/twin_rows.sh
+work_dir
 . host/reports/provenance.sh
 stamp=$(provenance_stamp "make twin-ceiling-maps$( [ "$PLANTS" = 12 ] || printf ' PLANTS=%s' "$PLANTS")")
 
@@ -41,7 +36,6 @@ if [ -s "$TMP/cases" ]; then
     CEILING_MAPS=1 xargs -P "$JOBS" -L 1 sh host/reports/twin_report.sh --plant < "$TMP/cases"
 fi
 
-. host/reports/twin_rows.sh
 rows="" k=1 better=0 worse=0
 while [ "$k" -le "$PLANTS" ]; do
     dm=$(cut -d' ' -f3 "$TMP/fig8_$k.draw")

@@ -251,13 +251,8 @@ fi
 # TWIN_REPORT_DIR=DIR keeps the plants' files in DIR (created if need be);
 # with TWIN_REPORT_REUSE=1 too, the plants already there are not run again
 # (the tables and figures are made anew from them)
-if [ -n "${TWIN_REPORT_DIR:-}" ]; then
-    TMP=$TWIN_REPORT_DIR
-    mkdir -p "$TMP"
-else
-    TMP=$(mktemp -d)
-    trap 'rm -rf "$TMP"' EXIT
-fi
+. host/reports/twin_rows.sh
+work_dir
 # the section's and the figures' stamp (host/reports/provenance.sh), naming the knobs
 # that differ from the defaults
 . host/reports/provenance.sh

@@ -1,7 +1,20 @@
-# twin_rows.sh - sourced by the fig8 studies of host/reports (twin_ceiling_maps.sh,
-# twin_step.sh): statistics of a twin's estimate rows as `beamslider twin --out`
-# writes them (t,s_hat,s_sigma,amplitude,power,y,y_hat,s_true,phase_error,
-# s_error,...) after the first 5 s, as twin_report.sh reads them. Sourced, not run.
+# twin_rows.sh - sourced by the twin studies of host/reports (twin_report.sh,
+# twin_ceiling_maps.sh, twin_step.sh): where their plants' files go, and
+# statistics of a twin's estimate rows as `beamslider twin --out` writes them
+# (t,s_hat,s_sigma,amplitude,power,y,y_hat,s_true,phase_error,s_error,...)
+# after the first 5 s, as twin_report.sh reads them. Sourced, not run.
+
+# work_dir: TMP, the plants' files: TWIN_REPORT_DIR if set (created if need
+# be, kept), else a new temporary directory removed when the script exits
+work_dir() {
+    if [ -n "${TWIN_REPORT_DIR:-}" ]; then
+        TMP=$TWIN_REPORT_DIR
+        mkdir -p "$TMP"
+    else
+        TMP=$(mktemp -d)
+        trap 'rm -rf "$TMP"' EXIT
+    fi
+}
 
 # within FILE...: the fraction of the rows with |s_twin - s_plant| <= 0.005
 within() {

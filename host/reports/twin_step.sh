@@ -29,13 +29,8 @@ MUS=${MUS:-0.18 0.20 0.22 0.24 0.25}
 JOBS=${JOBS:-$(nproc)}
 REF=${REF:-build/bs-reference}
 BIN=${BIN:-build/double/beamslider}
-if [ -n "${TWIN_REPORT_DIR:-}" ]; then
-    TMP=$TWIN_REPORT_DIR
-    mkdir -p "$TMP"
-else
-    TMP=$(mktemp -d)
-    trap 'rm -rf "$TMP"' EXIT
-fi
+. host/reports/twin_rows.sh
+work_dir
 . host/reports/provenance.sh
 stamp=$(provenance_stamp "make twin-step$( [ "$PLANTS" = 12 ] || printf ' PLANTS=%s' "$PLANTS")")
 start=$(date +%s)
@@ -93,7 +88,6 @@ for dt in 2e-5 1e-5; do
     fi
 done
 
-. host/reports/twin_rows.sh
 pooled() { # pooled DT SUFFIX: over every plant's rows
     k=1 files=""
     while [ "$k" -le "$PLANTS" ]; do files="$files $TMP/dt$1/fig8_$k.$2"; k=$((k + 1)); done
