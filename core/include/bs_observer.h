@@ -190,6 +190,10 @@ typedef struct bs_observer {
     bs_shape_cache shape;                             /* the mode shapes expanded about the slider */
     bs_lowpass2 power;                                /* <p> */
     bs_lowpass2 s_error_mean, s_error_sq;             /* of the raw s error */
+    bs_real drift_alpha;                              /* the lock-in's alpha over POSITION_EVERY steps */
+    bs_real drift_s;                                  /* the twin's s after the last position update */
+    bs_real drift_lag[2];                             /* its own drift less that through one and two
+                                                         of the lock-in's stages (5) */
     bs_real friction_persist;                         /* the s error low-passed over friction_time */
     bs_real friction_learnt;                          /* time spent learning mu [s] */
     bs_observer_estimate estimate;

@@ -38,7 +38,13 @@
  *    "stiff" branch), above it in phase (Re H > 0, "soft"). On that branch
  *    the crossing of |H|(s) with |H_m| nearest to the twin's s is s_meas,
  *    and s_error = s_meas - s_twin (mirrored beyond s = 1/2: s and 1 - s
- *    respond alike, so the estimate follows the side the twin is on). The
+ *    respond alike, so the estimate follows the side the twin is on).
+ *    s_meas is that of the lock-in's products, which lag the plant by the
+ *    two stages' 2 tau: a slider climbing at ds/dt reads 2 tau ds/dt low
+ *    (0.001 on fig8's high branch). So s_twin here is the twin's s less its
+ *    own drift passed through the same two stages, drift_lag (what the
+ *    corrections below move it by is left out: the twin's response to its
+ *    correction is not delayed, only its estimate of the plant). The
  *    linearised response of the beam with the slider attached cannot serve
  *    here: on the high branch the hardening holds the response below its
  *    resonance (phase ~150 deg where the linear model says ~10 deg), and on
@@ -309,6 +315,14 @@ bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer
     obs->options.friction_sigma = options->friction_sigma;
     obs->friction_persist = BS_R(0.0);
     obs->friction_learnt = BS_R(0.0);
+    {
+        bs_real retain = BS_R(1.0);
+        for (i = 0; i < POSITION_EVERY; ++i)
+            retain *= BS_R(1.0) - sim->scene->dt / obs->options.lockin_time;
+        obs->drift_alpha = BS_R(1.0) - retain;
+    }
+    obs->drift_s = bs_sim_position(sim);
+    obs->drift_lag[0] = obs->drift_lag[1] = BS_R(0.0);
     obs->steps = 0;
     obs->head = 0;
     for (i = 0; i <= BS_OBSERVER_MAX_LATENCY; ++i) {
@@ -611,6 +625,18 @@ static int matching_map(const bs_observer *obs, bs_real frequency, bs_real ampli
     return -1;
 }
 
+/* 5: the twin's drift since the last update, ds, into drift_lag: its s less
+ * s through the lock-in's first and second stage (bs_lowpass2_step over
+ * POSITION_EVERY steps, the drift taken as even over them). */
+static void follow_drift(bs_observer *obs, bs_real ds)
+{
+    const bs_real alpha = obs->drift_alpha;
+    const bs_real first = (BS_R(1.0) - alpha) * (obs->drift_lag[0] + ds);
+    const bs_real second = obs->drift_lag[1] + ds;
+    obs->drift_lag[0] = first;
+    obs->drift_lag[1] = second - alpha * (second - first);
+}
+
 /* 5 and 6: s_error, s_sigma and the reported quantities from the lock-in. */
 static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
 {
@@ -624,6 +650,8 @@ static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
     int mirror, map;
 
     est->s = bs_sim_position(sim);
+    follow_drift(obs, est->s - obs->drift_s);
+    obs->drift_s = est->s;
     est->power = bs_lowpass2_mean(&obs->power);
     est->s_sigma = SIGMA_UNKNOWN;
     est->s_error = BS_R(0.0);
@@ -649,7 +677,7 @@ static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
                     &slope)
         || slope == BS_R(0.0))
         return;
-    s_error = mirror ? s_near - s_cross : s_cross - s_near;
+    s_error = (mirror ? s_near - s_cross : s_cross - s_near) + obs->drift_lag[1];
     {
         const bs_real alpha = dt * (bs_real)POSITION_EVERY / (BS_R(4.0) * tau);
         bs_lowpass2_step(&obs->s_error_mean, s_error, alpha);
@@ -705,6 +733,7 @@ static void correct_position(bs_observer *obs, bs_sim *sim, bs_real interval)
     if (rate < -o->position_rate)
         rate = -o->position_rate;
     move_slider(sim, rate * interval);
+    obs->drift_s = bs_sim_position(sim); /* the correction is no drift */
 }
 
 /* 8: mu from the persistent part of the s error, over interval [s]. */
