@@ -286,12 +286,9 @@ s_stats() { # s_stats NAME SUFFIX -> "fraction_within p95 p50 rows"
         { v[++n] = $1; if ($1 <= 0.005) w++ }
         END { printf "%.3f %.4f %.4f %d", w / n, v[int(0.95 * n)], v[int(0.5 * n)], n }'
 }
-within_of() { # within_of FILE: its fraction of rows after 5 s within 0.005
-    awk -F, 'FNR > 1 && $1 + 0 > 5 { n++; d = $2 - $8; if (d <= 0.005 && d >= -0.005) w++ } END { printf "%.4f", w / n }' "$1"
-}
 gap_stats() { # gap_stats NAME -> "plants_more_than_3_points_below_their_ceiling largest_gap"
     for f in "$TMP/$1"_*.ceil; do
-        echo "$(within_of "$f") $(within_of "${f%.ceil}.mu")"
+        echo "$(within_digits 4 "$f") $(within_digits 4 "${f%.ceil}.mu")"
     done | awk '{ g = $1 - $2; if (g > 0.03) n++; if (g > m) m = g } END { printf "%d %.3f", n, m }'
 }
 # the 1 s windows in which the plant jumps branches: its amplitude (half the

@@ -16,10 +16,16 @@ work_dir() {
     fi
 }
 
-# within FILE...: the fraction of the rows with |s_twin - s_plant| <= 0.005
+# within FILE...: the fraction of the rows with |s_twin - s_plant| <= 0.005, to
+# three digits; within_digits DIGITS FILE...: to DIGITS
 within() {
-    awk -F, '$1 + 0 > 5 { d = $2 - $8; if (d < 0) d = -d; n++; if (d <= 0.005) w++ }
-             END { printf "%.3f", n ? w / n : 0 }' "$@"
+    within_digits 3 "$@"
+}
+within_digits() {
+    digits=$1
+    shift
+    awk -F, -v f="%.${digits}f" '$1 + 0 > 5 { d = $2 - $8; if (d < 0) d = -d; n++; if (d <= 0.005) w++ }
+                                 END { printf f, n ? w / n : 0 }' "$@"
 }
 
 # branches FILE: "share bias within_high within_low": the share of the rows with the
