@@ -44,7 +44,8 @@
  *    (0.001 on fig8's high branch). So s_twin here is the twin's s less its
  *    own drift passed through the same two stages, drift_lag (what the
  *    corrections below move it by is left out: the twin's response to its
- *    correction is not delayed, only its estimate of the plant). The
+ *    correction is not delayed, only its estimate of the plant; so is a
+ *    jump of its state set from outside, DRIFT_JUMP). The
  *    linearised response of the beam with the slider attached cannot serve
  *    here: on the high branch the hardening holds the response below its
  *    resonance (phase ~150 deg where the linear model says ~10 deg), and on
@@ -126,6 +127,10 @@
 #define FRICTION_LEARN_REF BS_R(2.0)
 #define FRICTION_SENSITIVITY BS_R(0.01)
 #define INV_SQRT3 BS_R(0.5773502691896258)
+/* 5: a change of s larger than this between two updates (0.001 L in 16
+ * samples, 3 L/s at dt = 2e-5 s; the slider drifts at hundredths of L a
+ * second) is a state set from outside the observer, not drift. */
+#define DRIFT_JUMP BS_R(0.001)
 
 typedef struct complex_real {
     bs_real re, im;
@@ -315,12 +320,6 @@ bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer
     obs->options.friction_sigma = options->friction_sigma;
     obs->friction_persist = BS_R(0.0);
     obs->friction_learnt = BS_R(0.0);
-    {
-        bs_real retain = BS_R(1.0);
-        for (i = 0; i < POSITION_EVERY; ++i)
-            retain *= BS_R(1.0) - sim->scene->dt / obs->options.lockin_time;
-        obs->drift_alpha = BS_R(1.0) - retain;
-    }
     obs->drift_s = bs_sim_position(sim);
     obs->drift_lag[0] = obs->drift_lag[1] = BS_R(0.0);
     obs->steps = 0;
@@ -331,6 +330,12 @@ bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer
         obs->past_accel[i] = BS_R(0.0);
     }
     bs_lockin_reference_init(&obs->reference, sim->scene->dt, obs->options.lockin_time);
+    {
+        bs_real retain = BS_R(1.0);
+        for (i = 0; i < POSITION_EVERY; ++i)
+            retain *= obs->reference.retain;
+        obs->drift_alpha = BS_R(1.0) - retain;
+    }
     /* stage by stage: a struct assignment may become a call of memcpy */
     {
         bs_lowpass2 *const filters[] = { &obs->meas_a, &obs->meas_b,
@@ -650,7 +655,8 @@ static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
     int mirror, map;
 
     est->s = bs_sim_position(sim);
-    follow_drift(obs, est->s - obs->drift_s);
+    if (bs_fabs(est->s - obs->drift_s) <= DRIFT_JUMP)
+        follow_drift(obs, est->s - obs->drift_s);
     obs->drift_s = est->s;
     est->power = bs_lowpass2_mean(&obs->power);
     est->s_sigma = SIGMA_UNKNOWN;
