@@ -178,7 +178,7 @@ typedef struct bs_observer {
     int head;                                         /* ring index of the newest entry */
     bs_lockin_reference reference;                    /* the aligned a_k and its quadrature */
     bs_lowpass2 meas_a, meas_b;                       /* <y a>, <y b> */
-    bs_lowpass2 twin_a, twin_b;                       /* <y^ a>, <y^ b> */
+    bs_lowpass2 twin_a, twin_b;                       /* <y^ a>, <y^ b> (unused when y is w: defl_a, defl_b) */
     bs_lowpass2 defl_a, defl_b;                       /* <w a>, <w b>: the twin's w(4L/7) */
     bs_real innovation_sq;                            /* running mean of e^2, each clipped at the gate */
     uint64_t last_outlier;                            /* step of the last outlier (0: none) */

@@ -546,8 +546,10 @@ static void demodulate(bs_observer *obs, bs_real a, bs_real y, bs_real y_twin, b
         bs_lowpass2_step(&obs->meas_a, y * a, alpha);
         bs_lowpass2_step(&obs->meas_b, y * b, alpha);
     }
-    bs_lowpass2_step(&obs->twin_a, y_twin * a, alpha);
-    bs_lowpass2_step(&obs->twin_b, y_twin * b, alpha);
+    if (obs->gains->signal != BS_SIGNAL_DEFLECTION) { /* else y^ is w^: its products are defl_a, defl_b */
+        bs_lowpass2_step(&obs->twin_a, y_twin * a, alpha);
+        bs_lowpass2_step(&obs->twin_b, y_twin * b, alpha);
+    }
     bs_lowpass2_step(&obs->defl_a, w_twin * a, alpha);
     bs_lowpass2_step(&obs->defl_b, w_twin * b, alpha);
     bs_lowpass2_step(&obs->power, power, alpha);
@@ -597,7 +599,7 @@ static int invert_map(const bs_observer_gains *g, const bs_real *h, bs_real targ
 {
     bs_real best = BS_R(2.0);
     int i, found = 0;
-    for (i = 0; i + 1 < g->table_count; ++i) {
+    for (i = 0; i + 1 < g->table_count && g->table_s[i] - near < best; ++i) {
         const bs_real h0 = h[i], h1 = h[i + 1];
         if (h0 < BS_R(0.0) || h1 < BS_R(0.0))
             continue; /* the branch does not exist there */
@@ -665,8 +667,8 @@ static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
         return; /* no excitation yet: nothing to demodulate against */
     aa = basis.aa;
     h_m = transfer(&basis, &obs->meas_a, &obs->meas_b);
-    h_t = transfer(&basis, &obs->twin_a, &obs->twin_b);
     h_w = transfer(&basis, &obs->defl_a, &obs->defl_b);
+    h_t = g->signal == BS_SIGNAL_DEFLECTION ? h_w : transfer(&basis, &obs->twin_a, &obs->twin_b);
     est->frequency = basis.kappa / TWO_PI;
     est->amplitude = bs_sqrt((h_w.re * h_w.re + h_w.im * h_w.im) * BS_R(2.0) * aa);
     hm_abs = bs_sqrt(h_m.re * h_m.re + h_m.im * h_m.im);
