@@ -1,10 +1,12 @@
 #!/bin/sh
-# twin_firmware_report.sh CSV TARGET:SCENE:VARIANT:ELF... - the cost of the twin
+# twin_firmware_report.sh CSV TARGET:SCENE:VARIANT:ELF[:DT]... - the cost of the twin
 # firmware (port/cortex-m/twin) on a whole recorded plant run under QEMU, written as the
 # section "Twin firmware" of docs/embedded.md (replacing it, or appended). Run through
 # `make twin-firmware-report` (tests/embedded/twin.mk builds the images and the stream;
 # about 10 minutes on 2 cores). CSV is the plant run the images' stream was made from
-# (its last row's s_true: the plant's s at the end).
+# (its last row's s_true: the plant's s at the end). DT: the image's sample period, 2e-5 s
+# when not given; the fig6_fast images (the coarser step of docs/design.md 4) run on
+# their own stream, whose plant run is fast-60s.csv beside CSV.
 #
 # Each image is the firmware built with TWIN_COST=1: the simulated clock runs the
 # producer once per twin step (one sample per step, never a queue: the images measure,
@@ -122,6 +124,7 @@ for spec in "$@"; do
     echo "$spec" > "$TMP/spec-$n"
 done
 word() { cut -d: -f"$2" "$TMP/spec-$1"; }
+dt_of() { _d=$(word "$1" 5); echo "${_d:-$DT}"; } # dt_of JOB: its sample period [s]
 # The twin's step inlined by -flto into the observer's sample counts as the step's
 # (tests/qemu/inline_names.sh; share_rows below)
 export CM_INLINE_NAMES="bs_step_measured bs_sim_step bs_sim_step_measured"
@@ -136,7 +139,7 @@ run_job() {
     { status=0
       CM_CYCLES=$cycles CM_PROFILE=$profile sh tests/qemu/count.sh "$elf" "$target" 3600 || status=$?
       echo "$status" > "$TMP/job-$j.status"; } |
-        awk -v clocks="$CLOCKS" -v dt=$DT -v entry=$ENTRY -v fifo="$FIFO" -v cycles="${cycles:-0}" -v mhz=$mhz \
+        awk -v clocks="$CLOCKS" -v dt="$(dt_of "$1")" -v entry=$ENTRY -v fifo="$FIFO" -v cycles="${cycles:-0}" -v mhz=$mhz \
             -v logfile="$TMP/job-$j.log" "$SUMMARY_AWK" > "$TMP/job-$j.sum" || :
     [ -z "$profile" ] || [ "$(cat "$TMP/job-$j.status")" != 0 ] ||
         sh tests/qemu/classes.sh "$TMP/job-$j.profile" "$elf" > "$TMP/job-$j.classes"
@@ -184,16 +187,17 @@ s_plant=$(tail -n 1 "$csv" | cut -d, -f4)
 cost_rows="" memory_rows="" backlog_rows=""
 j=1
 while [ "$j" -le "$n" ]; do
-    target=$(word "$j" 1) scene=$(word "$j" 2) variant=$(word "$j" 3) elf=$(word "$j" 4) s=$TMP/job-$j.sum
-    if [ "$target" = cortex-m4f ]; then budget=3360 unit= mhz=168; else budget=9600 unit=" (insn)" mhz=480; fi
-    cost_rows="$cost_rows| $scene | $target | $variant | $(val "$s" samples) | $(val "$s" step_insn) | $(val "$s" step_worst_insn) | $(val "$s" step_opt) | $(val "$s" step_worst_opt) | $(val "$s" step_pess) | $(val "$s" step_worst_pess) | $(val "$s" producer_insn) | $(val "$s" producer_pess) | $(val "$s" sample_insn) | $(val "$s" sample)$unit | $budget | $(val "$s" over) | $(val "$s" backlog_$mhz) ($(val "$s" backlog_time_$mhz)) | $(awk -v k="$(val "$s" overflow)" -v dt=$DT 'BEGIN { if (k > 0) printf "%.3f s", k * dt; else print "never" }') | $(val "$s" s) |
+    target=$(word "$j" 1) scene=$(word "$j" 2) variant=$(word "$j" 3) elf=$(word "$j" 4) s=$TMP/job-$j.sum dt=$(dt_of "$j")
+    if [ "$target" = cortex-m4f ]; then unit= mhz=168; else unit=" (insn)" mhz=480; fi
+    budget=$(awk -v m=$mhz -v d="$dt" 'BEGIN { printf "%.0f", m * d * 1e6 }')
+    cost_rows="$cost_rows| $scene | $target | $variant | $(val "$s" samples) | $(val "$s" step_insn) | $(val "$s" step_worst_insn) | $(val "$s" step_opt) | $(val "$s" step_worst_opt) | $(val "$s" step_pess) | $(val "$s" step_worst_pess) | $(val "$s" producer_insn) | $(val "$s" producer_pess) | $(val "$s" sample_insn) | $(val "$s" sample)$unit | $budget | $(val "$s" over) | $(val "$s" backlog_$mhz) ($(val "$s" backlog_time_$mhz)) | $(awk -v k="$(val "$s" overflow)" -v dt="$dt" 'BEGIN { if (k > 0) printf "%.3f s", k * dt; else print "never" }') | $(val "$s" s) |
 "
     set -- $(sizes "$elf")
     ram_copy=$(( $(symbol_size "$elf" scene_in_ram) + $(symbol_size "$elf" gains_in_ram) ))
     set -- "$@" $(arm-none-eabi-size -A "$elf" | awk '$1 == ".text" || $1 == ".ARM.exidx" { flash += $2 } $1 == ".data" { flash += $2; ram += $2 } $1 == ".bss" { ram += $2 } END { print flash, ram }')
     memory_rows="$memory_rows| $scene | $target | $variant | $1 | $2 | $3 | $4 | $(symbol_size "$elf" twin) | $(symbol_size "$elf" obs) | $(symbol_size "$elf" fifo) | $(symbol_size "$elf" block) | $ram_copy | $5 | $6 | $(val "$s" stack) |
 "
-    if [ "$target" = cortex-m4f ]; then
+    if [ "$target" = cortex-m4f ] && [ "$dt" = "$DT" ]; then # the clocks' budgets are for 2e-5 s
         row="| $scene | $variant |"
         for c in $CLOCKS; do row="$row $(val "$s" backlog_$c) |"; done
         backlog_rows="$backlog_rows$row
@@ -259,6 +263,29 @@ fits() {
     done
     echo "none of the clocks listed"
 }
+# the coarser step's paragraph (its images, when listed)
+fast_text=""
+fast=$(job cortex-m4f fig6_fast flash) fastram=$(job cortex-m4f fig6_fast ram)
+if [ -n "$fast" ] && [ -n "$fastram" ]; then
+    fast_dt=$(dt_of "$fast")
+    fast_budget=$(awk -v d="$fast_dt" 'BEGIN { printf "%.0f", 168 * d * 1e6 }')
+    fast_csv=$(dirname "$csv")/fast-60s.csv
+    f=$TMP/job-$fast.sum fr=$TMP/job-$fastram.sum
+    if [ "$(val "$f" backlog_168)" -le "$FIFO" ] || [ "$(val "$fr" backlog_168)" -le "$FIFO" ]; then
+        fast_verdict="it keeps pace on the 168 MHz M4F"
+    else
+        fast_verdict="it does not keep pace on the 168 MHz M4F"
+    fi
+    fast_text="**At the coarser step** (fig6 with dt = $fast_dt s, a stream of $(awk -v d="$fast_dt" 'BEGIN { printf "%.0f", 1 / d }') samples a second, and
+prewarped modal frequencies: docs/design.md 4, \"Prewarped frequencies\", compares its slow dynamics
+with the default step's and the converged model's) the same firmware, on a 60 s stream of that scene as
+the plant (\`beamslider twin-plant\`, as above; the plant's s at 60 s: $(tail -n 1 "$fast_csv" | cut -d, -f4)),
+takes $(val "$f" sample) estimated cycles per sample (flash) and $(val "$fr" sample) (RAM) against the
+$fast_budget of a sample period at 168 MHz; $(val "$f" over) and $(val "$fr" over) of its samples are over that budget,
+and the largest backlog over the stream is $(val "$f" backlog_168) samples ($(val "$f" backlog_time_168)) in flash and
+$(val "$fr" backlog_168) ($(val "$fr" backlog_time_168)) in RAM: $fast_verdict.
+"
+fi
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 git diff --quiet HEAD -- core port configs tests/embedded 2>/dev/null ||
     commit="$commit with uncommitted changes to the measured sources"
@@ -281,10 +308,11 @@ queue; the queue a real-time producer would build is computed from the measured 
 (Lindley recursion, script header). Cycles are the estimates of "The cycle model" above; the M7
 row gives instructions, which stand in for cycles in its backlog (480 MHz, budget 9600).
 
-**Cost per sample** at dt = 2e-5 s. "Twin step": the bracket around \`bs_observer_step\` (the
+**Cost per sample** at dt = 2e-5 s (fig6_fast: the coarser step below). "Twin step": the bracket around \`bs_observer_step\` (the
 twin's step and the observer's correction). "Producer": the bracket around \`twin_produce\`
 (the interrupt's work). "Per sample": all the firmware executes per sample (producer, FIFO,
-bookkeeping, the 10 Hz report), plus 24 cycles of SysTick entry and return. Steps over budget,
+bookkeeping, the 10 Hz report), plus 24 cycles of SysTick entry and return. Budget: the cycles
+(M7: instructions) of a sample period at 168 MHz (M7: 480 MHz). Samples over budget,
 the largest backlog and the first FIFO overflow at 168 MHz (M7: 480 MHz), from the per-sample
 cost (pessimistic). Last column: the twin's s at 60 s (the plant's: $s_plant; the ram variants
 end in the same state as the flash ones, bit for bit, which the script checks).
@@ -321,6 +349,7 @@ $(awk -v a="$(val "$one" s)" -v b="$s_plant" 'BEGIN { d = a - b; printf "%.3f", 
 $(awk -v a="$(val "$fig6" s)" -v b="$s_plant" 'BEGIN { d = a - b; printf "%.4f", d < 0 ? -d : d }'). A 480 MHz Cortex-M7 runs the
 fig6 twin in $(val "$TMP/job-$(job cortex-m7 fig6 flash).sum" sample) instructions per sample against 9600 cycles.
 
+$fast_text
 **Where a sample's cycles go** (the five-mode twin, constants in flash, profiled over the whole
 stream; tests/qemu/classes.sh): estimated cycles per sample (pessimistic), the floating-point
 arithmetic executed and its cycles, and the rest by kind of instruction, as in "Where the cycles

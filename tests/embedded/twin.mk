@@ -114,12 +114,37 @@ $(foreach s,fig6 fig6_1mode,\
     $(call twin_image,twin-cost-$s,cortex-m4f,$s,float,fig6-60s,sim,-DTWIN_COST=1)\
     $(call twin_image,twin-cost-$s-ram,cortex-m4f,$s,float,fig6-60s,sim,-DTWIN_COST=1 $(TWIN_RAM_FLAGS)))
 $(call twin_image,twin-cost-fig6,cortex-m7,fig6,float,fig6-60s,sim,-DTWIN_COST=1)
-# report arguments TARGET:SCENE:VARIANT:ELF
+# The fig6 twin at the coarser step of docs/design.md 4 ("Prewarped frequencies"):
+# fig6 with [numerics] dt = TWIN_FAST_DT and prewarp = on, a scene generated here
+# (TWIN_DIR/fig6_fast.ini, its header by `beamslider gen`), on its own 60 s stream
+# (the same scene as the plant, noise and bits as above), constants in flash and in RAM.
+# 1/32000 s: the stream (twin_stream.h) wants a whole number of samples a second.
+TWIN_FAST_DT := 3.125e-5
+$(TWIN_DIR)/fig6_fast.ini: configs/fig6.ini tests/embedded/twin.mk
+	@mkdir -p $(dir $@)
+	printf '[scene]\nbase = %s\ndescription = fig6 at dt = %s s with prewarped modal frequencies\n[numerics]\ndt = %s\nprewarp = on\n' \
+	    $(abspath configs/fig6.ini) $(TWIN_FAST_DT) $(TWIN_FAST_DT) > $@
+$(TWIN_DIR)/fig6_fast.h: $(TWIN_DIR)/fig6_fast.ini configs/mssp2023.ini $(TWIN_CLI)
+	$(TWIN_CLI) gen $< > $@.tmp && mv $@.tmp $@
+$(call emb_config_h,fig6_fast,float,subspace): core/include/bs_build_config.h.in port/build_config.sh $(TWIN_DIR)/fig6_fast.h
+	@sh port/build_config.sh $@ float 'BS_SCENE_CONFIG="$(TWIN_DIR)/fig6_fast.h"'
+$(TWIN_DIR)/fast-60s.csv: $(TWIN_DIR)/fig6_fast.ini configs/mssp2023.ini $(TWIN_CLI)
+	$(TWIN_CLI) twin-plant $< $(TWIN_PLANT_ARGS) --t-end 60 --out $@ > $@.json
+$(TWIN_DIR)/fig6_fast-fast-60s/twin_gains.h: $(TWIN_DIR)/fig6_fast.ini $(TWIN_DIR)/fast-60s.csv $(TWIN_CLI)
+	@mkdir -p $(dir $@)
+	$(TWIN_CLI) twin-gains $< --noise $(call twin_noise,$(TWIN_DIR)/fast-60s.csv,noise) \
+	    --accel-noise $(call twin_noise,$(TWIN_DIR)/fast-60s.csv,accel_noise) --name twin_gains > $@.tmp && mv $@.tmp $@
+$(call twin_image,twin-cost-fig6_fast,cortex-m4f,fig6_fast,float,fast-60s,sim,-DTWIN_COST=1)
+$(call twin_image,twin-cost-fig6_fast-ram,cortex-m4f,fig6_fast,float,fast-60s,sim,-DTWIN_COST=1 $(TWIN_RAM_FLAGS))
+# report arguments TARGET:SCENE:VARIANT:ELF[:DT] (DT: the stream's sample period, 2e-5 s
+# when not given)
 TWIN_COST_SPECS := cortex-m4f:fig6:flash:$(call cm_elf,twin-cost-fig6,cortex-m4f) \
                    cortex-m4f:fig6:ram:$(call cm_elf,twin-cost-fig6-ram,cortex-m4f) \
                    cortex-m4f:fig6_1mode:flash:$(call cm_elf,twin-cost-fig6_1mode,cortex-m4f) \
                    cortex-m4f:fig6_1mode:ram:$(call cm_elf,twin-cost-fig6_1mode-ram,cortex-m4f) \
-                   cortex-m7:fig6:flash:$(call cm_elf,twin-cost-fig6,cortex-m7)
+                   cortex-m7:fig6:flash:$(call cm_elf,twin-cost-fig6,cortex-m7) \
+                   cortex-m4f:fig6_fast:flash:$(call cm_elf,twin-cost-fig6_fast,cortex-m4f):$(TWIN_FAST_DT) \
+                   cortex-m4f:fig6_fast:ram:$(call cm_elf,twin-cost-fig6_fast-ram,cortex-m4f):$(TWIN_FAST_DT)
 # the friction estimate's cost (docs/twin.md, "Friction"): the 1 s stream without it and
 # with it running at every update (gate open, deadband wide: mu, and so the trajectory, stay
 # as without it, so that the brackets differ by the estimate alone)
@@ -130,7 +155,8 @@ twin-friction-cost: $(if $(CM_TOOLS_OK),$(call cm_elf,twin-cost-friction-off,cor
         $(call cm_elf,twin-cost-friction-on,cortex-m4f) $(TWIN_DIR)/fig6-1s.stream)
 	$(if $(CM_TOOLS_OK),@sh host/reports/friction_cost.sh $(call cm_elf,twin-cost-friction-off,cortex-m4f) \
 	    $(call cm_elf,twin-cost-friction-on,cortex-m4f),@echo "$(CM_TOOLS_MSG)")
-twin-firmware-report-images: $(foreach c,$(TWIN_COST_SPECS),$(call emb_word,$c,4)) $(TWIN_DIR)/fig6-60s.stream
+twin-firmware-report-images: $(foreach c,$(TWIN_COST_SPECS),$(call emb_word,$c,4)) $(TWIN_DIR)/fig6-60s.stream \
+        $(TWIN_DIR)/fast-60s.stream
 twin-firmware-report:
 	$(MAKE) --no-print-directory -j2 twin-firmware-report-images
 	CM_OPT='$(CM_OPT)' CM_BUILD='$(CM_BUILD)' TWIN_FIFO_SAMPLES=1024 \
