@@ -41,7 +41,8 @@ docs/baseline.md|make baseline-check|
 docs/harvester.md|make harvester-report|
 docs/twin.md|make twin-report|
 docs/twin.md|make twin-ceiling-maps|
-docs/twin.md|make twin-step|'
+docs/twin.md|make twin-step|
+docs/twin.md|make twin-fast|'
 # Not checked: docs/baseline_base_frame.md, the record of one past change (0.6.0's
 # base frame against 113766f), kept as it was made; docs/fields.md (make fields,
 # compared with `beamslider fields` by tests/check_cli.sh).

@@ -14,6 +14,9 @@
 #   make twin-step      the high branch's climb against friction at two steps, and the fig8
 #                       plants with the twin at 2e-5 s and 1e-5 s -> docs/twin.md,
 #                       "The twin's step under friction"
+#   make twin-fast      the first fig6 plants with the twin at 2e-5 s and at 3.125e-5 s
+#                       prewarped (the step that keeps pace on a 168 MHz M4F) ->
+#                       docs/twin.md, "The twin at a coarser step"
 #   make harvester-report  harvested power over a load sweep, self-tuning under
 #                       electrical damping, a moving ambient frequency -> docs/harvester.md
 #   make baseline-check [BASELINE=COMMIT|this] [THIS_ARGS='run options'] [OUT=docs/x.md] [TOLERANCE=2]
@@ -32,14 +35,14 @@
 #
 # `make test` also runs sweep-check (host/reports/figures/check_sweep.sh).
 
-.PHONY: fig6-report accuracy stability bench baseline-check harvester-report twin-report twin-ceiling-maps twin-step figures \
+.PHONY: fig6-report accuracy stability bench baseline-check harvester-report twin-report twin-ceiling-maps twin-step twin-fast figures \
         sweep-check deps-figures \
         provenance-builds
 
 # Every report stamps what it writes with the state hashes of both precisions'
 # CLI (host/reports/provenance.sh), and a page of measured cost with the compiler
 # and flags, which make passes to the scripts here.
-REPORTS := fig6-report accuracy stability bench baseline-check harvester-report twin-report twin-ceiling-maps twin-step figures maps \
+REPORTS := fig6-report accuracy stability bench baseline-check harvester-report twin-report twin-ceiling-maps twin-step twin-fast figures maps \
            embedded-report twin-firmware-report
 export PROVENANCE_CC := $(strip $(CC))
 export PROVENANCE_CFLAGS := $(strip $(CFLAGS))
@@ -93,6 +96,11 @@ twin-step: $(BUILD)/bs-reference
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
 	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
 	sh host/reports/twin_step.sh
+
+twin-fast: $(BUILD)/bs-reference
+	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
+	$(MAKE) --no-print-directory REAL=float $(BUILD)/float/beamslider
+	sh host/reports/twin_fast.sh
 
 BASELINE ?= 2326ca8
 baseline-check:

@@ -48,6 +48,12 @@ FRICTION_GAIN=${FRICTION_GAIN:-30}
 # step stays 5e-6 s) and the measured signals' sample period (2e-5 s, the
 # scenes'; 1e-5 s: "The twin's step under friction", docs/twin.md)
 TWIN_DT=${TWIN_DT:-2e-5}
+# TWIN_PREWARP=on: the twin's scene at TWIN_DT with its frequencies prewarped
+# (docs/design.md 4), commissioned at that step (its decay model run with the
+# twin's own step and prewarp: the identified stiffness goes through the same
+# prewarp); the plant's inner step is TWIN_DT over the nearest whole number of
+# 5e-6 s ("The twin at a coarser step", docs/twin.md)
+TWIN_PREWARP=${TWIN_PREWARP:-off}
 here=$(pwd)
 
 # mssp2023.ini's values, which the scenes below do not override
@@ -185,12 +191,15 @@ plant() {
         printf '[scene]\nbase = %s/configs/%s.ini\n' "$here" "$scene"
         [ "$load" = none ] || printf '[transducer]\nload = resistor\nresistance = %s\n' "$load"
     } > "$w/twin.ini"
+    [ "$TWIN_PREWARP" = off ] || printf '[numerics]\ndt = %s\nprewarp = on\n' "$TWIN_DT" >> "$w/twin.ini"
     set -- $(commission "$w" "$seed" "$load")
     e_twin=$1 th_twin=$3 burst_amp=$4
     # TWIN_DT: the closed loop's step (the twin's, the plant's outer step and
-    # the signals' sample period; commissioning above keeps the scene's)
+    # the signals' sample period; commissioning above keeps the scene's, but
+    # for a prewarped twin's, set above)
     if [ "$TWIN_DT" != 2e-5 ]; then
-        for f in plant twin; do printf '[numerics]\ndt = %s\n' "$TWIN_DT" >> "$w/$f.ini"; done
+        printf '[numerics]\ndt = %s\n' "$TWIN_DT" >> "$w/plant.ini"
+        [ "$TWIN_PREWARP" != off ] || printf '[numerics]\ndt = %s\n' "$TWIN_DT" >> "$w/twin.ini"
     fi
     scale=$(awk -v e="$E" -v x="$e_twin" 'BEGIN { printf "%.6f", sqrt(x / e) }')
     th_scale=$(awk -v t="$THETA" -v x="$th_twin" 'BEGIN { printf "%.6f", x / t }')

@@ -1,5 +1,5 @@
 # twin_rows.sh - sourced by the twin studies of host/reports (twin_report.sh,
-# twin_ceiling_maps.sh, twin_step.sh): where their plants' files go, and
+# twin_ceiling_maps.sh, twin_step.sh, twin_fast.sh): where their plants' files go, and
 # statistics of a twin's estimate rows as `beamslider twin --out` writes them
 # (t,s_hat,s_sigma,amplitude,power,y,y_hat,s_true,phase_error,s_error,...)
 # after the first 5 s, as twin_report.sh reads them. Sourced, not run.
