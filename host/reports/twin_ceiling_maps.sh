@@ -25,16 +25,7 @@ work_dir
 . host/reports/provenance.sh
 stamp=$(provenance_stamp "make twin-ceiling-maps$( [ "$PLANTS" = 12 ] || printf ' PLANTS=%s' "$PLANTS")")
 
-k=1
-while [ "$k" -le "$PLANTS" ]; do
-    if [ "${TWIN_REPORT_REUSE:-0}" != 1 ] || [ ! -s "$TMP/fig8_$k.maps" ]; then
-        echo "fig8 fig8 120 none $k $TMP 126 10" # as twin_report.sh's fig8 plants
-    fi
-    k=$((k + 1))
-done > "$TMP/cases"
-if [ -s "$TMP/cases" ]; then
-    CEILING_MAPS=1 xargs -P "$JOBS" -L 1 sh host/reports/twin_report.sh --plant < "$TMP/cases"
-fi
+run_plants fig8 "$TMP" maps CEILING_MAPS=1
 
 rows="" k=1 better=0 worse=0
 while [ "$k" -le "$PLANTS" ]; do

@@ -32,17 +32,7 @@ start=$(date +%s)
 for dt in 2e-5 "$FAST_DT"; do
     prewarp=off
     [ "$dt" = 2e-5 ] || prewarp=on
-    mkdir -p "$TMP/dt$dt"
-    k=1
-    while [ "$k" -le "$PLANTS" ]; do
-        if [ "${TWIN_REPORT_REUSE:-0}" != 1 ] || [ ! -s "$TMP/dt$dt/fig6_$k.mu" ]; then
-            echo "fig6 fig6 60 71e3 $k $TMP/dt$dt 124 14" # as twin_report.sh's fig6 plants
-        fi
-        k=$((k + 1))
-    done > "$TMP/dt$dt/cases"
-    if [ -s "$TMP/dt$dt/cases" ]; then
-        TWIN_DT=$dt TWIN_PREWARP=$prewarp xargs -P "$JOBS" -L 1 sh host/reports/twin_report.sh --plant < "$TMP/dt$dt/cases"
-    fi
+    run_plants fig6 "$TMP/dt$dt" mu TWIN_DT="$dt" TWIN_PREWARP="$prewarp"
 done
 
 # bias FILE...: the mean of s_twin - s_plant after 5 s

@@ -75,17 +75,7 @@ done
 
 # ---- 2. the twin at both steps -----------------------------------------------------
 for dt in 2e-5 1e-5; do
-    mkdir -p "$TMP/dt$dt"
-    k=1
-    while [ "$k" -le "$PLANTS" ]; do
-        if [ "${TWIN_REPORT_REUSE:-0}" != 1 ] || [ ! -s "$TMP/dt$dt/fig8_$k.mu" ]; then
-            echo "fig8 fig8 120 none $k $TMP/dt$dt 126 10" # as twin_report.sh's fig8 plants
-        fi
-        k=$((k + 1))
-    done > "$TMP/dt$dt/cases"
-    if [ -s "$TMP/dt$dt/cases" ]; then
-        TWIN_DT=$dt xargs -P "$JOBS" -L 1 sh host/reports/twin_report.sh --plant < "$TMP/dt$dt/cases"
-    fi
+    run_plants fig8 "$TMP/dt$dt" mu TWIN_DT="$dt"
 done
 
 pooled() { # pooled DT SUFFIX: over every plant's rows
