@@ -133,8 +133,8 @@ $stamp
 Produced by \`make bench\` (host/reports/bench.sh) on $(date -u +%Y-%m-%d), commit $commit, against
 commit $baseline (\`BENCH_BASELINE\`: 0.7.0, before the step's redesign of 0.8.0).
 Machine: $cpu, $(nproc) cores, shared (load average $load at the start, $load_after at the end of
-the paired runs); compiler: $compiler; the core at \`-O3\`, the rest at \`-O2\`
-(0.7.0: everything at \`-O2\`).
+the paired runs); compiler: $compiler; the core at \`${PROVENANCE_CORE_OPT:-?}\`, the rest at \`-O2\`
+(0.7.0: everything at \`-O2\`).$(case " ${PROVENANCE_CORE_OPT:-} " in *" -flto "*) printf '%s\n%s' " With -flto the core's files are linked into the program as one" "unit (the Makefile's CORE_LTO: its stages inlined across files; results unchanged)." ;; esac)
 
 ## This tree against the baseline
 
