@@ -176,6 +176,12 @@ typedef struct bs_observer {
     bs_observer_options options;
     uint64_t steps;
     int head;                                         /* ring index of the newest entry */
+    /* what every sample reads of the gains and the scene, copied at init:
+     * a controller keeps those in flash, where each read costs wait states */
+    int latency, signal;                              /* the gains' */
+    int gain_last;                                    /* the gain schedule's last index */
+    bs_real noise_sq;                                 /* the gains' noise, squared */
+    bs_real com_offset;                               /* the scene's */
     bs_lockin_reference reference;                    /* the aligned a_k and its quadrature */
     bs_lowpass2 meas_a, meas_b;                       /* <y a>, <y b> */
     bs_lowpass2 twin_a, twin_b;                       /* <y^ a>, <y^ b> (unused when y is w: defl_a, defl_b) */

@@ -302,6 +302,11 @@ bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer
 
     obs->sim = sim;
     obs->gains = gains;
+    obs->latency = gains->latency;
+    obs->signal = gains->signal;
+    obs->gain_last = gains->gain_count - 1;
+    obs->noise_sq = gains->noise * gains->noise;
+    obs->com_offset = sim->scene->com_offset;
     /* member by member: a struct assignment may become a call of memcpy,
      * which the freestanding core does not have */
     obs->options.correct_beam = options->correct_beam;
@@ -396,7 +401,7 @@ static void enter_interval(bs_observer *obs, int i, int n)
 static bs_real gains_at(bs_observer *obs, bs_real s, int n)
 {
     const bs_observer_gains *g = obs->gains;
-    const int last = g->gain_count - 1;
+    const int last = obs->gain_last;
     int i = obs->gain_interval;
     if (i > 0 && i < last - 1 && s > obs->gain_s_from && s <= obs->gain_s_to)
         return (s - obs->gain_s_from) / obs->gain_s_width; /* still inside an inner interval: what the walk finds */
@@ -483,8 +488,8 @@ static void correction_of(bs_observer *obs, const bs_sim *sim, bs_real e, correc
     c->slider[2] -= dw_slope;
     c->velocity[2] -= dv_slope;
 #endif
-    add_compensated(&c->slider[0], &c->x_low, scene->com_offset * dw_slope);
-    c->velocity[0] += scene->com_offset * dv_slope;
+    add_compensated(&c->slider[0], &c->x_low, obs->com_offset * dw_slope);
+    c->velocity[0] += obs->com_offset * dv_slope;
     c->voltage = BS_R(0.0);
 #if BS_WITH_PIEZO
     if (scene->load != BS_LOAD_NONE)
@@ -524,7 +529,7 @@ static int commit_correction(bs_sim *sim, const corrected_state *c)
  * gate's level for a skipped one. */
 static int beyond_gate(bs_observer *obs, bs_real e)
 {
-    const bs_real noise_sq = obs->gains->noise * obs->gains->noise;
+    const bs_real noise_sq = obs->noise_sq;
     const bs_real scale_sq = obs->innovation_sq > noise_sq ? obs->innovation_sq : noise_sq;
     const bs_real limit_sq = obs->options.outlier_gate * obs->options.outlier_gate * scale_sq;
     const bs_real e_sq = e * e;
@@ -546,7 +551,7 @@ static void demodulate(bs_observer *obs, bs_real a, bs_real y, bs_real y_twin, b
         bs_lowpass2_step(&obs->meas_a, y * a, alpha);
         bs_lowpass2_step(&obs->meas_b, y * b, alpha);
     }
-    if (obs->gains->signal != BS_SIGNAL_DEFLECTION) { /* else y^ is w^: its products are defl_a, defl_b */
+    if (obs->signal != BS_SIGNAL_DEFLECTION) { /* else y^ is w^: its products are defl_a, defl_b */
         bs_lowpass2_step(&obs->twin_a, y_twin * a, alpha);
         bs_lowpass2_step(&obs->twin_b, y_twin * b, alpha);
     }
@@ -785,9 +790,8 @@ static bs_status usable(const bs_observer *obs, const bs_sim *sim)
 static bs_status observe(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_real measurement, int measured)
 {
     const int given = measured;
-    const bs_observer_gains *g;
     bs_status status;
-    bs_real dt, e;
+    bs_real e;
     int aligned;
 
     status = usable(obs, sim);
@@ -799,15 +803,13 @@ static bs_status observe(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_r
     if (status != BS_OK)
         return status;
 
-    g = obs->gains;
-    dt = sim->scene->dt;
     obs->steps += 1;
     obs->head = obs->head == BS_OBSERVER_MAX_LATENCY ? 0 : obs->head + 1;
     obs->past_deflection[obs->head] = bs_sensor_of(sim);
-    obs->past_signal[obs->head] = g->signal == BS_SIGNAL_DEFLECTION ? obs->past_deflection[obs->head]
-                                                                    : twin_signal(sim, g->signal);
+    obs->past_signal[obs->head] = obs->signal == BS_SIGNAL_DEFLECTION ? obs->past_deflection[obs->head]
+                                                                      : twin_signal(sim, obs->signal);
     obs->past_accel[obs->head] = base_accel;
-    aligned = obs->head - g->latency;
+    aligned = obs->head - obs->latency;
     if (aligned < 0)
         aligned += BS_OBSERVER_MAX_LATENCY + 1;
 
@@ -833,6 +835,7 @@ static bs_status observe(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_r
     demodulate(obs, obs->past_accel[aligned], measurement, obs->past_signal[aligned],
                obs->past_deflection[aligned], twin_power(sim), measured);
     if (obs->steps % POSITION_EVERY == 0) {
+        const bs_real dt = sim->scene->dt;
         estimate_position(obs, sim, dt);
         correct_position(obs, sim, dt * (bs_real)POSITION_EVERY);
         estimate_friction(obs, sim, dt * (bs_real)POSITION_EVERY);
