@@ -84,6 +84,8 @@ typedef struct bs_step_constants {
     bs_real dt_gravity[2];              /* dt g (x, z) */
     bs_real mu, e_n;                    /* the contact laws (bs_sim_set_contact_laws) */
     bs_real compliance[2];              /* 1 + eps of the normal and tangential rows (bs_contact.h) */
+    bs_real series[7];                  /* the contact kinematics' series coefficients and bound
+                                           (core/src/bs_contact.c): read from RAM, not from flash */
 } bs_step_constants;
 
 typedef struct bs_sim {

@@ -80,15 +80,32 @@
  * With n a constant (bs_inline.h) the test is folded away. */
 #define MODE_0_TERM(n, term) ((n) > 0 ? (term) : BS_R(0.0))
 
+/* The coefficients of the series below, and their bound on the square of
+ * the angle (0.05^2), in k->series: a controller reads a literal from flash,
+ * with wait states, and these from the sim's RAM (bs_contact_prepare). */
+enum { SMALL_SQ, SIN_6, SIN_20, SIN_42, COS_12, COS_30, COS_56 };
+
+void bs_contact_prepare(bs_step_constants *k)
+{
+    bs_real *c = k->series;
+    c[SMALL_SQ] = BS_R(0.0025);
+    c[SIN_6] = BS_R(0.16666666666666667);
+    c[SIN_20] = BS_R(0.05);
+    c[SIN_42] = BS_R(0.023809523809523808);
+    c[COS_12] = BS_R(0.083333333333333333);
+    c[COS_30] = BS_R(0.033333333333333333);
+    c[COS_56] = BS_R(0.017857142857142857);
+}
+
 /* cos alpha = (1 + w'^2)^(-1/2). For x = w'^2 < 1/400 (slopes below 0.05, all
  * but the wildest steps) the binomial series 1 - x/2 + 3x^2/8 - 5x^3/16 + ...,
  * alternating with falling terms, stops below half an ulp: in float after
  * x^2 (next term 5/16 x^3 < 5e-9), in double after x^5 (231/1024 x^6 < 6e-17).
  * A square root and a division saved per corner in contact. */
-BS_INLINE bs_real cos_of_slope(bs_real w_slope)
+BS_INLINE bs_real cos_of_slope(const bs_real *c, bs_real w_slope)
 {
     const bs_real x = w_slope * w_slope;
-    if (x < BS_R(0.0025)) {
+    if (x < c[SMALL_SQ]) {
 #if BS_REAL_FLOAT
         return BS_R(1.0) - x * (BS_R(0.5) - x * BS_R(0.375));
 #else
@@ -118,7 +135,7 @@ BS_INLINE void add_corner(int n, const bs_step_constants *k, const bs_shape_cach
     const bs_real hh = k->half_thickness;
     const bs_real w_slope = p->w_slope;
     const bs_real d_x = zeta * hh * w_slope;
-    const bs_real cos_alpha = cos_of_slope(w_slope);
+    const bs_real cos_alpha = cos_of_slope(k->series, w_slope);
     const bs_real sin_alpha = w_slope * cos_alpha;
     const bs_real n_x = -zeta * sin_alpha, n_z = zeta * cos_alpha;
     const bs_real gap_n = n_x * d_x + n_z * d_z;
@@ -255,15 +272,13 @@ static void add_stop(int id, bs_real sign, const bs_real (*warm)[BS_ROWS], bs_co
  * (R - h) / B ~ 0.005 rad; for |beta| < 0.05 the Taylor polynomials below
  * are exact to rounding in double (first omitted terms beta^9/9! = 5e-18 and
  * beta^10/10! = 3e-20) and save two library calls per step. */
-BS_INLINE void rotation(bs_real beta, bs_real *cos_beta, bs_real *sin_beta)
+BS_INLINE void rotation(const bs_real *c, bs_real beta, bs_real *cos_beta, bs_real *sin_beta)
 {
     const bs_real b2 = beta * beta;
-    if (b2 < BS_R(0.0025)) { /* multiplications by 1/6, 1/20, ...: no division */
-        *sin_beta = beta * (BS_R(1.0) - b2 * BS_R(0.16666666666666667)
-                            * (BS_R(1.0) - b2 * BS_R(0.05) * (BS_R(1.0) - b2 * BS_R(0.023809523809523808))));
+    if (b2 < c[SMALL_SQ]) { /* multiplications by 1/6, 1/20, ...: no division */
+        *sin_beta = beta * (BS_R(1.0) - b2 * c[SIN_6] * (BS_R(1.0) - b2 * c[SIN_20] * (BS_R(1.0) - b2 * c[SIN_42])));
         *cos_beta = BS_R(1.0) - b2 * BS_R(0.5)
-                    * (BS_R(1.0) - b2 * BS_R(0.083333333333333333)
-                       * (BS_R(1.0) - b2 * BS_R(0.033333333333333333) * (BS_R(1.0) - b2 * BS_R(0.017857142857142857))));
+                    * (BS_R(1.0) - b2 * c[COS_12] * (BS_R(1.0) - b2 * c[COS_30] * (BS_R(1.0) - b2 * c[COS_56])));
         return;
     }
     *cos_beta = bs_cos(beta);
@@ -277,7 +292,7 @@ BS_INLINE bs_status detect(int n, const bs_scene *scene, const bs_step_constants
     bs_real cos_beta = BS_R(1.0), sin_beta = BS_R(0.0);
 
 #if BS_WITH_ROTATION
-    rotation(frame->beta, &cos_beta, &sin_beta);
+    rotation(k->series, frame->beta, &cos_beta, &sin_beta);
 #endif
     set->count = 0; /* in the order found: P1, P2, P4, P3, the stops */
     if (side_of_slot(n, scene, k, frame, &frame->cache[0], 0, 1, cos_beta, sin_beta, set)

@@ -22,6 +22,9 @@ typedef struct bs_contact_frame {
     const bs_real (*warm)[BS_ROWS]; /* each contact's last percussion (bs_sim.percussion): the warm start */
 } bs_contact_frame;
 
+/* The contact kinematics' own constants in k (bs_prepare). */
+void bs_contact_prepare(bs_step_constants *k);
+
 /* Finds the contacts with g_N < 0 and fills set->count, id, mu (with
  * friction), phi and phi' at each corner in contact and the coefficients and
  * slider parts of its force directions W (k: the sim's prepared constants),

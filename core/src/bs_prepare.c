@@ -132,4 +132,5 @@ void bs_prepare(bs_sim *sim)
     k->e_n = scene->e_n;
     k->compliance[0] = BS_R(1.0) + BS_CONTACT_COMPLIANCE;
     k->compliance[1] = BS_R(1.0) + BS_CONTACT_COMPLIANCE_T;
+    bs_contact_prepare(k);
 }
