@@ -105,6 +105,11 @@ typedef struct bs_goal {
 } bs_goal;
 #define MODES (BS_WITH_FRICTION ? 4 : 2) /* modes a contact can take */
 
+/* sum + term for a sum of absolute values, or term alone for its first:
+ * 0 + |x| is |x| bit for bit, and the 0 would be a literal that a
+ * controller loads from flash. */
+#define SUM_OF_ABS(first, sum, term) ((first) ? (term) : (sum) + (term))
+
 /* xi of contact a's rows with the current P: both rows in one pass over P, a
  * contact's pair of columns at a time; each sum still adds in the order of j. */
 BS_INLINE void velocity(const bs_contact_set *set, int a, bs_real *xi)
@@ -248,14 +253,14 @@ static int solve_contact(bs_contact_set *set, const bs_real *step, int a)
  * unrolled, and a step[] of that length visibly filled). */
 BS_INLINE bs_real residual_at(const bs_contact_set *set, int count, const bs_real *step, const bs_real *xi)
 {
-    bs_real sum = BS_R(0.0);
+    bs_real sum = BS_R(0.0); /* 0 + |x| is |x|: the sum starts at its first term (SUM_OF_ABS) */
     int a, r;
     for (a = 0; a < count; ++a) {
         const bs_real *p = &set->percussion[ROWS * a];
         bs_real projected[ROWS];
         prox(set, a, step[a], &xi[ROWS * a], p, projected);
         for (r = 0; r < ROWS; ++r)
-            sum += bs_fabs(p[r] - projected[r]);
+            sum = SUM_OF_ABS(a == 0 && r == 0, sum, bs_fabs(p[r] - projected[r]));
     }
     return sum;
 }
@@ -525,12 +530,12 @@ static int next_modes(bs_contact_set *set, const bs_real *step, int *mode, const
 }
 
 /* sum_a |P_N,a| of the warm start, which warm_mode weighs a P_N against. */
-BS_INLINE bs_real warm_total(const bs_contact_set *set)
+BS_INLINE bs_real warm_total(const bs_contact_set *set, int count)
 {
     bs_real total = BS_R(0.0);
     int b;
-    for (b = 0; b < set->count; ++b)
-        total += bs_fabs(set->percussion[ROWS * b]);
+    for (b = 0; b < count; ++b)
+        total = SUM_OF_ABS(b == 0, total, bs_fabs(set->percussion[ROWS * b]));
     return total;
 }
 
@@ -772,7 +777,7 @@ static void solve_pair(bs_contact_set *set, const bs_real *step, bs_goal goal, i
     bs_real best_residual = BS_R(-1.0), trial_residual;
     unsigned tried = 0; /* bit MODES * mode[0] + mode[1]: that pair solved */
     int mode[2], index, j, closed;
-    const bs_real total = warm_total(set);
+    const bs_real total = warm_total(set, 2);
 
     mode[0] = warm_mode(set, 0, total);
     mode[1] = warm_mode(set, 1, total);
@@ -887,7 +892,7 @@ static void solve_many(bs_contact_set *set, const bs_real *step, bs_goal goal, i
 #if BS_WITH_SUBSPACE
     int mode[BS_MAX_CONTACTS];
     int budget = SYSTEMS_MAX;
-    const bs_real total = warm_total(set);
+    const bs_real total = warm_total(set, set->count);
 
     for (a = 0; a < set->count; ++a)
         mode[a] = warm_mode(set, a, total);
