@@ -57,6 +57,9 @@ typedef struct bs_shape_cache {
  * into the sim's own memory, so that a firmware's step reads RAM even with
  * the scene in flash: pre-multiplied by dt where that saves work per step,
  * the contact laws settable at run time. */
+/* Terms of the excitation's sine and cosine series (core/src/bs_excitation.c). */
+#define BS_EXCITATION_TERMS (BS_REAL_FLOAT ? 4 : 7)
+
 typedef struct bs_step_constants {
     bs_real dt, half_dt;
     bs_real dt_gamma[BS_MAX_MODES];     /* dt gamma_k */
@@ -86,6 +89,7 @@ typedef struct bs_step_constants {
     bs_real compliance[2];              /* 1 + eps of the normal and tangential rows (bs_contact.h) */
     bs_real series[7];                  /* the contact kinematics' series coefficients and bound
                                            (core/src/bs_contact.c): read from RAM, not from flash */
+    bs_real excitation_series[2 * BS_EXCITATION_TERMS + 1]; /* the excitation's (core/src/bs_excitation.c) */
 } bs_step_constants;
 
 typedef struct bs_sim {

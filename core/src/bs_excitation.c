@@ -25,52 +25,75 @@
  * and bit for bit the same on every IEEE machine (no libm involved).
  */
 #include "bs_excitation.h"
+#include "bs_inline.h"
+#include "bs_sim_internal.h"
 
 #define QUADRANT ((uint64_t)1 << 62)
 
-static bs_real sine_series(bs_real d)
+/* The series' coefficients, highest term first: the sine's 1 / (k (k + 1))
+ * for k = 2 m, the cosine's for k = 2 m - 1, then the angle of one unit of
+ * the folded phase (its top 32 bits in float: u32 -> float is one
+ * instruction; all 62 in double). The step reads a copy in the sim's RAM
+ * (bs_excitation_prepare): a controller reads a literal from flash, with
+ * wait states. */
+#define TERMS BS_EXCITATION_TERMS
+enum { SINE = 0, COSINE = TERMS, UNIT = 2 * TERMS };
+
+static const bs_real coefficients[2 * TERMS + 1] = {
+#if !BS_REAL_FLOAT
+    BS_R(1.0) / BS_R(210.0), BS_R(1.0) / BS_R(156.0), BS_R(1.0) / BS_R(110.0), /* 14 * 15, ... */
+#endif
+    BS_R(1.0) / BS_R(72.0), BS_R(1.0) / BS_R(42.0), BS_R(1.0) / BS_R(20.0), BS_R(1.0) / BS_R(6.0), /* 8 * 9, ... */
+#if !BS_REAL_FLOAT
+    BS_R(1.0) / BS_R(240.0), BS_R(1.0) / BS_R(182.0), BS_R(1.0) / BS_R(132.0), /* 15 * 16, ... */
+#endif
+    BS_R(1.0) / BS_R(90.0), BS_R(1.0) / BS_R(56.0), BS_R(1.0) / BS_R(30.0), BS_R(1.0) / BS_R(12.0), /* 9 * 10, ... */
+#if BS_REAL_FLOAT
+    BS_R(1.5707963267948966) / BS_R(4294967296.0),
+#else
+    BS_R(1.5707963267948966) / BS_R(4611686018427387904.0),
+#endif
+};
+
+void bs_excitation_prepare(bs_step_constants *k)
+{
+    int i;
+    for (i = 0; i < 2 * TERMS + 1; ++i)
+        k->excitation_series[i] = coefficients[i];
+}
+
+/* sin d / d and cos d, the coefficients c as above (Horner, from the
+ * highest term; the first product by s = 1 is folded away). */
+BS_INLINE bs_real sine_series(const bs_real *c, bs_real d)
 {
     const bs_real d2 = d * d;
     bs_real s = BS_R(1.0);
-#if !BS_REAL_FLOAT
-    s = BS_R(1.0) - d2 * (BS_R(1.0) / BS_R(210.0)) * s; /* 14 * 15 */
-    s = BS_R(1.0) - d2 * (BS_R(1.0) / BS_R(156.0)) * s;
-    s = BS_R(1.0) - d2 * (BS_R(1.0) / BS_R(110.0)) * s;
-#endif
-    s = BS_R(1.0) - d2 * (BS_R(1.0) / BS_R(72.0)) * s;  /* 8 * 9 */
-    s = BS_R(1.0) - d2 * (BS_R(1.0) / BS_R(42.0)) * s;
-    s = BS_R(1.0) - d2 * (BS_R(1.0) / BS_R(20.0)) * s;
-    s = BS_R(1.0) - d2 * (BS_R(1.0) / BS_R(6.0)) * s;
+    int m;
+    for (m = 0; m < TERMS; ++m)
+        s = BS_R(1.0) - d2 * c[SINE + m] * s;
     return d * s;
 }
 
-static bs_real cosine_series(bs_real d)
+BS_INLINE bs_real cosine_series(const bs_real *c, bs_real d)
 {
     const bs_real d2 = d * d;
-    bs_real c = BS_R(1.0);
-#if !BS_REAL_FLOAT
-    c = BS_R(1.0) - d2 * (BS_R(1.0) / BS_R(240.0)) * c; /* 15 * 16 */
-    c = BS_R(1.0) - d2 * (BS_R(1.0) / BS_R(182.0)) * c;
-    c = BS_R(1.0) - d2 * (BS_R(1.0) / BS_R(132.0)) * c;
-#endif
-    c = BS_R(1.0) - d2 * (BS_R(1.0) / BS_R(90.0)) * c;  /* 9 * 10 */
-    c = BS_R(1.0) - d2 * (BS_R(1.0) / BS_R(56.0)) * c;
-    c = BS_R(1.0) - d2 * (BS_R(1.0) / BS_R(30.0)) * c;
-    c = BS_R(1.0) - d2 * (BS_R(1.0) / BS_R(12.0)) * c;
-    return BS_R(1.0) - d2 * BS_R(0.5) * c;
+    bs_real s = BS_R(1.0);
+    int m;
+    for (m = 0; m < TERMS; ++m)
+        s = BS_R(1.0) - d2 * c[COSINE + m] * s;
+    return BS_R(1.0) - d2 * BS_R(0.5) * s;
 }
 
 /* The folded angle d in [0, pi/4] of a phase and whether it was folded
  * (d = pi/2 - x). */
-static bs_real folded_angle(uint64_t phase, int *folded)
+BS_INLINE bs_real folded_angle(const bs_real *c, uint64_t phase, int *folded)
 {
     const uint64_t within = phase & (QUADRANT - 1);
     const uint64_t from_axis = (*folded = within > QUADRANT / 2) ? QUADRANT - within : within;
 #if BS_REAL_FLOAT
-    /* 31 bits are plenty for float, and u32 -> float is one instruction */
-    return (bs_real)(uint32_t)(from_axis >> 30) * (BS_R(1.5707963267948966) / BS_R(4294967296.0));
+    return (bs_real)(uint32_t)(from_axis >> 30) * c[UNIT];
 #else
-    return (bs_real)from_axis * (BS_R(1.5707963267948966) / BS_R(4611686018427387904.0));
+    return (bs_real)from_axis * c[UNIT];
 #endif
 }
 
@@ -78,9 +101,9 @@ void bs_excitation_sincos(uint64_t phase, bs_real *sine, bs_real *cosine)
 {
     const unsigned quadrant = (unsigned)(phase >> 62);
     int folded;
-    const bs_real d = folded_angle(phase, &folded);
-    const bs_real s_d = sine_series(d);
-    const bs_real c_d = cosine_series(d);
+    const bs_real d = folded_angle(coefficients, phase, &folded);
+    const bs_real s_d = sine_series(coefficients, d);
+    const bs_real c_d = cosine_series(coefficients, d);
     const bs_real s = folded ? c_d : s_d; /* sin and cos of the angle within the quadrant */
     const bs_real c = folded ? s_d : c_d;
 
@@ -94,21 +117,26 @@ void bs_excitation_sincos(uint64_t phase, bs_real *sine, bs_real *cosine)
 
 /* cos of the phase alone: one series instead of two (the step needs no
  * sine), bit for bit the cosine of bs_excitation_sincos. */
-static bs_real cosine_of(uint64_t phase)
+BS_INLINE bs_real cosine_of(const bs_real *c, uint64_t phase)
 {
     const unsigned quadrant = (unsigned)(phase >> 62);
     int folded;
-    const bs_real d = folded_angle(phase, &folded);
+    const bs_real d = folded_angle(c, phase, &folded);
     /* cos x in quadrant 0 is c, in 1 -s, in 2 -c, in 3 s, with (s, c) the
      * sine and cosine within the quadrant: of d, swapped when folded */
     const int wants_sine = (quadrant & 1u) != (unsigned)folded;
-    const bs_real value = wants_sine ? sine_series(d) : cosine_series(d);
+    const bs_real value = wants_sine ? sine_series(c, d) : cosine_series(c, d);
     return quadrant == 1 || quadrant == 2 ? -value : value;
 }
 
 bs_real bs_excitation_step_mean(uint64_t phase_mid, bs_real step_accel)
 {
-    return -step_accel * cosine_of(phase_mid);
+    return -step_accel * cosine_of(coefficients, phase_mid);
+}
+
+bs_real bs_excitation_step_mean_of(const bs_sim *sim)
+{
+    return -sim->step_accel * cosine_of(sim->k.excitation_series, sim->phase + sim->phase_step_half);
 }
 
 uint64_t bs_excitation_phase_step_half(double frequency, double dt)

@@ -22,6 +22,7 @@
 #include "bs_contact.h"
 #include "bs_piezo.h"
 #include "bs_port.h"
+#include "bs_sim_internal.h"
 
 #if BS_WITH_STRETCHING
 /* 1 if the symmetric n x n matrix s is positive semidefinite: its LDL^T
@@ -133,4 +134,5 @@ void bs_prepare(bs_sim *sim)
     k->compliance[0] = BS_R(1.0) + BS_CONTACT_COMPLIANCE;
     k->compliance[1] = BS_R(1.0) + BS_CONTACT_COMPLIANCE_T;
     bs_contact_prepare(k);
+    bs_excitation_prepare(k);
 }

@@ -30,6 +30,12 @@ static inline bs_real bs_sensor_of(const bs_sim *sim)
     return w;
 }
 
+/* The excitation's series coefficients into k (bs_prepare), and the mean
+ * base acceleration over sim's next step (bs_excitation_step_mean) with
+ * those: read from the sim's RAM, not from flash (core/src/bs_excitation.c). */
+void bs_excitation_prepare(bs_step_constants *k);
+bs_real bs_excitation_step_mean_of(const bs_sim *sim);
+
 /* bs_sim_step_measured for a caller that has checked what it checks (the
  * sim ready, base_accel finite): the observer, every sample. */
 bs_status bs_step_measured(bs_sim *sim, bs_real base_accel);

@@ -314,7 +314,7 @@ bs_status bs_sim_step(bs_sim *sim)
     const bs_status status = bs_sim_status(sim);
     if (status != BS_OK)
         return status;
-    return step(sim, bs_excitation_step_mean(sim->phase + sim->phase_step_half, sim->step_accel));
+    return step(sim, bs_excitation_step_mean_of(sim));
 }
 
 bs_status bs_sim_step_measured(bs_sim *sim, bs_real base_accel)
