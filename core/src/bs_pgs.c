@@ -310,8 +310,8 @@ BS_INLINE bs_real percussion_scale(const bs_contact_set *set, int count, const b
     bs_real scale = BS_R(0.0);
     int a, r;
     for (a = 0; a < count; ++a)
-        for (r = 0; r < ROWS; ++r)
-            scale += step[a] * bs_fabs(set->free_velocity[ROWS * a + r]);
+        for (r = 0; r < ROWS; ++r) /* step > 0 (G_ii holds m^-1 |n|^2): no term is -0 */
+            scale = SUM_OF_ABS(a == 0 && r == 0, scale, step[a] * bs_fabs(set->free_velocity[ROWS * a + r]));
     return scale;
 }
 
