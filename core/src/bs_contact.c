@@ -593,7 +593,11 @@ BS_INLINE void apply(int n, const bs_step_constants *k, const bs_contact_set *se
     bs_real push[BS_SLIDER_DOF] = { BS_R(0.0) }, along_phi[2], along_slope[2];
     int a, i;
 
-    if (set->count == 2 && set->id[1] < BS_CORNERS) { /* two corners: one pass over the modes */
+    if (set->count == 1 && set->id[0] < BS_CORNERS) { /* one corner (most contact steps): no loop over the set */
+        percussion_of(set, 0, &along_phi[0], &along_slope[0], push);
+        for (i = 0; i < n; ++i)
+            u_beam[i] += MODE_GAIN(k, i) * (along_phi[0] * set->phi[0][i] + along_slope[0] * set->slope[0][i]);
+    } else if (set->count == 2 && set->id[1] < BS_CORNERS) { /* two corners: one pass over the modes */
         percussion_of(set, 0, &along_phi[0], &along_slope[0], push);
         percussion_of(set, 1, &along_phi[1], &along_slope[1], push);
         for (i = 0; i < n; ++i)
