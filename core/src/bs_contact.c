@@ -116,6 +116,18 @@ BS_INLINE bs_real cos_of_slope(const bs_real *c, bs_real w_slope)
     return BS_R(1.0) / bs_sqrt(BS_R(1.0) + x);
 }
 
+/* Has the compiler read again what it reads through pointer p from here on,
+ * rather than keep what it read before: an empty asm statement that may
+ * change p (GCC and Clang; elsewhere nothing). For values it would keep
+ * across a long stretch of code in registers it does not have: it spills
+ * them to the stack and reads them back, a store and a load where a load
+ * would do. */
+#if defined(__GNUC__)
+#define READ_AGAIN(p) __asm__("" : "+r"(p))
+#else
+#define READ_AGAIN(p) ((void)0)
+#endif
+
 /* A slot corner at the midpoint and the beam under it. */
 typedef struct corner_point {
     bs_real arm_x, arm_z;          /* A rho */
@@ -150,6 +162,7 @@ BS_INLINE void add_corner(int n, const bs_step_constants *k, const bs_shape_cach
     const int a = set->count++;
 
     set->id[a] = corner;
+    READ_AGAIN(cache); /* the 20 coefficients of the side's mode sums: kept, they spilled */
     bs_shape_expanded(n, cache, p->t, p->on_beam, k->slope_scale, set->phi[a], set->slope[a]);
     set->percussion[BS_ROWS * a] = warm[corner][0]; /* the warm start: its last percussion */
 #if BS_WITH_FRICTION
