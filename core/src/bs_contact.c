@@ -543,8 +543,10 @@ BS_INLINE void problem_of_two(int n, const bs_step_constants *k, bs_contact_set 
 BS_INLINE void problem(int n, const bs_step_constants *k, bs_contact_set *set, const bs_real *u_beam,
                        const bs_real *u_slider, const bs_real *u_beam_before, const bs_real *u_slider_before)
 {
-    const int corners = (set->count > 0 && set->id[0] < BS_CORNERS) + (set->count > 1 && set->id[1] < BS_CORNERS);
-    int a, b, i;
+    int corners, a, b, i;
+
+    READ_AGAIN(set); /* read back what the detection (inlined before it) wrote: kept, it spilled */
+    corners = (set->count > 0 && set->id[0] < BS_CORNERS) + (set->count > 1 && set->id[1] < BS_CORNERS);
 
     if (set->count == 1 && corners == 1) {
         problem_of_one(n, k, set, u_beam, u_slider, u_beam_before, u_slider_before);
