@@ -118,7 +118,8 @@ BS_INLINE bs_status smooth_part(const bs_sim *sim, step_state *s, const int n)
         /* linear stiffness at q_B + theta dt u_B; the explicit remainder is the cubic term alone */
         const bs_scene *scene = sim->scene;
 #if BS_WITH_STRETCHING
-        if (!(energy >= BS_R(0.0) && energy < k->stretch_limit) && !bs_beam_stable(k, n, 0, sq, energy, extra))
+        if (BS_UNLIKELY(!(energy >= BS_R(0.0) && energy < k->stretch_limit))
+            && !bs_beam_stable(k, n, 0, sq, energy, extra))
             return BS_E_UNSTABLE;
 #endif
         for (i = 0; i < n; ++i) {
@@ -131,7 +132,8 @@ BS_INLINE bs_status smooth_part(const bs_sim *sim, step_state *s, const int n)
 #endif
     {
 #if BS_WITH_STRETCHING
-        if (!(energy >= BS_R(0.0) && energy < k->stretch_limit) && !bs_beam_stable(k, n, k->dt_omega_sq, sq, energy, extra))
+        if (BS_UNLIKELY(!(energy >= BS_R(0.0) && energy < k->stretch_limit))
+            && !bs_beam_stable(k, n, k->dt_omega_sq, sq, energy, extra))
             return BS_E_UNSTABLE;
 #endif
         for (i = 0; i < n; ++i) {
