@@ -475,9 +475,11 @@ BS_INLINE void problem_of_one(int n, const bs_step_constants *k, bs_contact_set 
     delassus_block(k, set, 0, 0, dot);
 }
 
-/* Two corners in contact (the rest but a few): velocities in one pass over
- * the modes, then self and cross products in another (18 sums in one pass
- * would not fit a Cortex-M4F's 32 registers: they spilled). */
+/* Two corners in contact (the rest but a few): a's velocities and self
+ * products in one pass over the modes, then b's with the cross products in
+ * another (11 sums; all 18 in one pass would not fit a Cortex-M4F's 32
+ * registers: they spilled), each contact's rows written when its pass ends
+ * so that no sum waits through the other pass in a register. */
 BS_INLINE void problem_of_two(int n, const bs_step_constants *k, bs_contact_set *set,
                            const bs_real *u_beam, const bs_real *u_slider, const bs_real *u_beam_before,
                            const bs_real *u_slider_before)
@@ -492,25 +494,30 @@ BS_INLINE void problem_of_two(int n, const bs_step_constants *k, bs_contact_set 
 #if BS_WITH_RESTITUTION
     va.at[2] = MODE_0_TERM(n, phi_a[0] * u_beam_before[0]);
     va.at[3] = MODE_0_TERM(n, slope_a[0] * u_beam_before[0]);
-    vb.at[2] = MODE_0_TERM(n, phi_b[0] * u_beam_before[0]);
-    vb.at[3] = MODE_0_TERM(n, slope_b[0] * u_beam_before[0]);
 #endif
-    for (i = 1; i < n; ++i) {
-        va.at[0] += phi_a[i] * u_beam[i];
-        va.at[1] += slope_a[i] * u_beam[i];
-        vb.at[0] += phi_b[i] * u_beam[i];
-        vb.at[1] += slope_b[i] * u_beam[i];
-#if BS_WITH_RESTITUTION
-        va.at[2] += phi_a[i] * u_beam_before[i];
-        va.at[3] += slope_a[i] * u_beam_before[i];
-        vb.at[2] += phi_b[i] * u_beam_before[i];
-        vb.at[3] += slope_b[i] * u_beam_before[i];
-#endif
-    }
-    (void)u_beam_before;
     aa[0] = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi_a[0] * phi_a[0]);
     aa[1] = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi_a[0] * slope_a[0]);
     aa[3] = MODE_0_TERM(n, MODE_GAIN(k, 0) * slope_a[0] * slope_a[0]);
+    for (i = 1; i < n; ++i) {
+        va.at[0] += phi_a[i] * u_beam[i];
+        va.at[1] += slope_a[i] * u_beam[i];
+#if BS_WITH_RESTITUTION
+        va.at[2] += phi_a[i] * u_beam_before[i];
+        va.at[3] += slope_a[i] * u_beam_before[i];
+#endif
+        aa[0] += MODE_GAIN(k, i) * phi_a[i] * phi_a[i];
+        aa[1] += MODE_GAIN(k, i) * phi_a[i] * slope_a[i];
+        aa[3] += MODE_GAIN(k, i) * slope_a[i] * slope_a[i];
+    }
+    aa[2] = aa[1];
+    free_velocity(k, set, 0, &va, u_slider, u_slider_before);
+    delassus_block(k, set, 0, 0, aa);
+
+#if BS_WITH_RESTITUTION
+    vb.at[2] = MODE_0_TERM(n, phi_b[0] * u_beam_before[0]);
+    vb.at[3] = MODE_0_TERM(n, slope_b[0] * u_beam_before[0]);
+#endif
+    (void)u_beam_before;
     bb[0] = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi_b[0] * phi_b[0]);
     bb[1] = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi_b[0] * slope_b[0]);
     bb[3] = MODE_0_TERM(n, MODE_GAIN(k, 0) * slope_b[0] * slope_b[0]);
@@ -520,9 +527,12 @@ BS_INLINE void problem_of_two(int n, const bs_step_constants *k, bs_contact_set 
     ba[3] = MODE_0_TERM(n, MODE_GAIN(k, 0) * slope_b[0] * slope_a[0]);
     for (i = 1; i < n; ++i) {
         const bs_real gp = MODE_GAIN(k, i) * phi_b[i], gs = MODE_GAIN(k, i) * slope_b[i];
-        aa[0] += MODE_GAIN(k, i) * phi_a[i] * phi_a[i];
-        aa[1] += MODE_GAIN(k, i) * phi_a[i] * slope_a[i];
-        aa[3] += MODE_GAIN(k, i) * slope_a[i] * slope_a[i];
+        vb.at[0] += phi_b[i] * u_beam[i];
+        vb.at[1] += slope_b[i] * u_beam[i];
+#if BS_WITH_RESTITUTION
+        vb.at[2] += phi_b[i] * u_beam_before[i];
+        vb.at[3] += slope_b[i] * u_beam_before[i];
+#endif
         bb[0] += gp * phi_b[i];
         bb[1] += gp * slope_b[i];
         bb[3] += gs * slope_b[i];
@@ -531,11 +541,8 @@ BS_INLINE void problem_of_two(int n, const bs_step_constants *k, bs_contact_set 
         ba[2] += gs * phi_a[i];
         ba[3] += gs * slope_a[i];
     }
-    aa[2] = aa[1];
     bb[2] = bb[1];
-    free_velocity(k, set, 0, &va, u_slider, u_slider_before);
     free_velocity(k, set, 1, &vb, u_slider, u_slider_before);
-    delassus_block(k, set, 0, 0, aa);
     delassus_block(k, set, 1, 1, bb);
     delassus_block(k, set, 1, 0, ba);
 }
