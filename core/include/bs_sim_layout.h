@@ -122,8 +122,9 @@ typedef struct bs_sim {
      * short (a Cortex-M's VLDR reaches 1020 bytes) */
     bs_step_constants k;               /* the scene as the step reads it (bs_prepare) */
     bs_real shape_reach;               /* how far the expansions serve (core/src/bs_shape.c) */
+    bs_contact_set contacts;           /* before the caches: the step reads its members at many offsets
+                                          from the sim, each cache's through one pointer */
     bs_shape_cache side[2];            /* mode shapes about the left (P1, P2) and right (P4, P3) corners */
-    bs_contact_set contacts;
 } bs_sim;
 
 #endif
