@@ -112,7 +112,7 @@
 #include "bs_shape.h"
 #include "bs_sim_internal.h"
 
-#define OBSERVER_READY 0x62736f62u /* "bsob" */
+#define OBSERVER_READY 0x6f6f6f6fu /* "oooo": a Thumb-2 immediate, like BS_SIM_READY */
 #define TWO_PI BS_R(6.283185307179586)
 #define HALF_PI BS_R(1.5707963267948966)
 #define PI BS_R(3.141592653589793)

@@ -19,8 +19,10 @@
 #define BS_UNLIKELY(x) (x)
 #endif
 
-/* bs_sim.ready of an initialised sim ("bsim"); anything else is not ready. */
-#define BS_SIM_READY 0x6273696du
+/* bs_sim.ready of an initialised sim ("mmmm"); anything else is not ready.
+ * One byte repeated: a Thumb-2 immediate, which the check of every step
+ * compares with directly instead of reading a literal from flash. */
+#define BS_SIM_READY 0x6d6d6d6du
 
 /* The library's own build tag and sizes (core/src/bs_version.c). */
 bs_status bs_build_matches(uint32_t tag, size_t sim_size, size_t scene_size);
