@@ -22,12 +22,12 @@
  * scene, and its zeros dropped. */
 BS_INLINE bs_real bs_beam_stretch(const bs_step_constants *k, int n, const bs_real *q, bs_real *sq)
 {
-    bs_real energy = BS_R(0.0);
+    bs_real energy = BS_ZERO;
     int i, j;
 #ifndef BS_SCENE_STRETCH_USED
     if (k->stretch_parity) { /* a run-time scene of symmetric and antisymmetric modes: S_ij = 0 for odd i + j */
         for (i = 0; i < n; ++i) {
-            bs_real acc = BS_R(0.0);
+            bs_real acc = BS_ZERO;
             for (j = i & 1; j < n; j += 2)
                 acc += k->stretch[i][j] * q[j];
             sq[i] = acc;
@@ -37,7 +37,7 @@ BS_INLINE bs_real bs_beam_stretch(const bs_step_constants *k, int n, const bs_re
     }
 #endif
     for (i = 0; i < n; ++i) {
-        bs_real acc = BS_R(0.0);
+        bs_real acc = BS_ZERO;
         for (j = 0; j < n; ++j)
             if (BS_STRETCH_USED(i, j))
                 acc += k->stretch[i][j] * q[j];

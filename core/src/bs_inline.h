@@ -8,10 +8,32 @@
 #ifndef BS_INLINE_H
 #define BS_INLINE_H
 
+#include "bs_real.h"
+
 #if defined(__GNUC__)
 #define BS_INLINE static inline __attribute__((always_inline))
 #else
 #define BS_INLINE static inline
+#endif
+
+/* BS_ZERO: +0 for a sum to start at. A Cortex-M's FPU has no immediate 0,
+ * and GCC reads a float 0 from a literal in flash; this one is an integer
+ * 0 moved into the FPU (movs, vmov), the same bits. */
+#if defined(__GNUC__) && defined(__ARM_FP) && BS_REAL_FLOAT
+#include <stdint.h>
+static inline bs_real bs_zero_of_bits(void)
+{
+    union {
+        uint32_t bits;
+        bs_real value;
+    } zero;
+    zero.bits = 0;
+    __asm__("" : "+r"(zero.bits)); /* else GCC sees the constant 0 and reads it from flash */
+    return zero.value;
+}
+#define BS_ZERO bs_zero_of_bits()
+#else
+#define BS_ZERO BS_R(0.0)
 #endif
 
 /* BS_MODES_SWITCH(count, statement): statement with the identifier MODES, the

@@ -452,7 +452,7 @@ static void correction_of(bs_observer *obs, const bs_sim *sim, bs_real e, correc
     const int n = BS_NMODES(scene);
     const bs_real *from = obs->gain_from, *change = obs->gain_change;
     bs_real phi[BS_MAX_MODES], slope[BS_MAX_MODES];
-    bs_real dw = BS_R(0.0), dw_slope = BS_R(0.0), dv = BS_R(0.0), dv_slope = BS_R(0.0);
+    bs_real dw = BS_ZERO, dw_slope = BS_ZERO, dv = BS_ZERO, dv_slope = BS_ZERO;
     const bs_real x = sim->slider[0] + sim->x_c_low;
     const bs_real within = gains_at(obs, x / sim->k.length, n);
     bs_real t = sim->k.slope_scale * (x - obs->shape.centre); /* bs_shape_offset, from the prepared constants */

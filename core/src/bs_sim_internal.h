@@ -6,6 +6,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "bs_inline.h"
 #include "bs_sim_layout.h"
 
 /* Which way the step's tests mostly go, for the compiler to lay the common
@@ -36,7 +37,7 @@ static inline int bs_sim_is_ready(const bs_sim *sim)
  * check, inlined where it runs every sample (the observer). */
 static inline bs_real bs_sensor_of(const bs_sim *sim)
 {
-    bs_real w = BS_R(0.0);
+    bs_real w = BS_ZERO;
     int k;
     for (k = 0; k < BS_NMODES(sim->scene); ++k)
         w += sim->k.phi_sensor[k] * sim->q_beam[k];
