@@ -18,22 +18,28 @@
 
 /* BS_ZERO: +0 for a sum to start at. A Cortex-M's FPU has no immediate 0,
  * and GCC reads a float 0 from a literal in flash; this one is an integer
- * 0 moved into the FPU (movs, vmov), the same bits. */
+ * 0 moved into the FPU (movs, vmov), the same bits. BS_ROUNDING(m): m eps
+ * (m a power of two), the same way (its bits a Thumb-2 immediate: a mov). */
 #if defined(__GNUC__) && defined(__ARM_FP) && BS_REAL_FLOAT
 #include <stdint.h>
-static inline bs_real bs_zero_of_bits(void)
+static inline bs_real bs_real_of_bits(uint32_t bits)
 {
     union {
         uint32_t bits;
         bs_real value;
-    } zero;
-    zero.bits = 0;
-    __asm__("" : "+r"(zero.bits)); /* else GCC sees the constant 0 and reads it from flash */
-    return zero.value;
+    } x;
+    x.bits = bits;
+    __asm__("" : "+r"(x.bits)); /* else GCC sees the constant and reads it from flash */
+    return x.value;
 }
-#define BS_ZERO bs_zero_of_bits()
+#define BS_ZERO bs_real_of_bits(0)
+/* 2^(e - 127) has the bits e << 23; eps = 2^-23 */
+#define BS_ROUNDING(m) bs_real_of_bits((uint32_t)(127 - 23 + BS_LOG2_##m) << 23)
+#define BS_LOG2_16 4
+#define BS_LOG2_64 6
 #else
 #define BS_ZERO BS_R(0.0)
+#define BS_ROUNDING(m) (BS_R(m##.0) * BS_REAL_EPS)
 #endif
 
 /* BS_MODES_SWITCH(count, statement): statement with the identifier MODES, the

@@ -395,7 +395,7 @@ static void active_set_solve(const bs_contact_set *set, const int *mode, bs_real
         for (i = rank + 1; i < k; ++i)
             if (bs_fabs(m[i][col]) > bs_fabs(m[pivot][col]))
                 pivot = i;
-        if (!(bs_fabs(m[pivot][col]) > BS_R(16.0) * BS_REAL_EPS * size))
+        if (!(bs_fabs(m[pivot][col]) > BS_ROUNDING(16) * size))
             continue; /* dependent column: its unknown stays 0 */
         if (pivot != rank)
             for (j = col; j <= k; ++j) {
@@ -549,7 +549,7 @@ BS_INLINE int warm_mode(const bs_contact_set *set, int a, bs_real total)
     /* a P_N within rounding (16 eps) of 0 against the set's total is 0, as
      * the step leaves it after a take-off (again a warm start from elsewhere
      * may not) */
-    if (!(p[0] > BS_R(16.0) * BS_REAL_EPS * total)) {
+    if (!(p[0] > BS_ROUNDING(16) * total)) {
         /* no percussion: sticking if it approaches under the others' warm
          * percussions, else lifting off */
         const bs_real *g = set->delassus[ROWS * a];
@@ -564,7 +564,7 @@ BS_INLINE int warm_mode(const bs_contact_set *set, int a, bs_real total)
         /* on the cone to rounding (16 eps): slipping. A slip leaves P_T at
          * -s mu P_N exactly, but a warm start from elsewhere (a solver's
          * answer, a checkpoint's) may sit an ulp inside it */
-        const bs_real limit = set->mu[a] * p[0] * (BS_R(1.0) - BS_R(16.0) * BS_REAL_EPS);
+        const bs_real limit = set->mu[a] * p[0] * (BS_R(1.0) - BS_ROUNDING(16));
         if (!(p[1] < limit && p[1] > -limit))
             return p[1] > BS_R(0.0) ? MODE_SLIP_NEG : MODE_SLIP_POS;
     }
@@ -580,7 +580,7 @@ BS_INLINE int cramer2(bs_real a00, bs_real a01, bs_real a10, bs_real a11, bs_rea
     const bs_real det = a00 * a11 - a01 * a10;
     const bs_real size = bs_fabs(a00) + bs_fabs(a01) + bs_fabs(a10) + bs_fabs(a11);
     bs_real inverse;
-    if (!(bs_fabs(det) > BS_R(16.0) * BS_REAL_EPS * size * size))
+    if (!(bs_fabs(det) > BS_ROUNDING(16) * size * size))
         return 0;
     inverse = BS_R(1.0) / det;
     x[0] = (b0 * a11 - a01 * b1) * inverse;
@@ -600,7 +600,7 @@ BS_INLINE int cramer3(const bs_real (*a)[3], const bs_real *b, bs_real *x)
     for (i = 0; i < 3; ++i)
         for (j = 0; j < 3; ++j)
             size += bs_fabs(a[i][j]);
-    if (!(bs_fabs(det) > BS_R(16.0) * BS_REAL_EPS * size * size * size))
+    if (!(bs_fabs(det) > BS_ROUNDING(16) * size * size * size))
         return 0;
     inverse = BS_R(1.0) / det;
     x[0] = (c00 * b[0] + (a[0][2] * a[2][1] - a[0][1] * a[2][2]) * b[1] + (a[0][1] * a[1][2] - a[0][2] * a[1][1]) * b[2])
@@ -647,7 +647,7 @@ BS_INLINE int pair_system(const bs_contact_set *set, const int *mode, bs_real *t
         const int n = kind0 ? 0 : 2;
         const bs_real f = kind0 ? f0 : f1;
         const bs_real a = g[n][n] + f * g[n][n + 1];
-        if (!(bs_fabs(a) > BS_R(16.0) * BS_REAL_EPS * (bs_fabs(g[n][n]) + bs_fabs(f * g[n][n + 1]))))
+        if (!(bs_fabs(a) > BS_ROUNDING(16) * (bs_fabs(g[n][n]) + bs_fabs(f * g[n][n + 1]))))
             return 0;
         trial[n] = -c[n] / a;
         trial[n + 1] = f * trial[n];
@@ -943,7 +943,7 @@ BS_INLINE bs_goal goal_of(const bs_contact_set *set, int count, const bs_solver_
     const bs_real scale = percussion_scale(set, count, step);
     bs_goal goal;
     goal.tolerance = options->tol_rel * scale + options->tol_abs;
-    goal.exact = BS_R(64.0) * BS_REAL_EPS * scale;
+    goal.exact = BS_ROUNDING(64) * scale;
     /* A scale that overflowed would take any residual, an infinite one
      * included, as within tolerance: such a solve never converges. (scale
      * >= 0; the test needs no constant, which a controller reads from
