@@ -19,7 +19,8 @@
 /* BS_ZERO: +0 for a sum to start at. A Cortex-M's FPU has no immediate 0,
  * and GCC reads a float 0 from a literal in flash; this one is an integer
  * 0 moved into the FPU (movs, vmov), the same bits. BS_ROUNDING(m): m eps
- * (m a power of two), the same way (its bits a Thumb-2 immediate: a mov). */
+ * (m a power of two), the same way (its bits a Thumb-2 immediate: a mov).
+ * BS_CONSTANT(value, bits): value, which has the float bits given, so too. */
 #if defined(__GNUC__) && defined(__ARM_FP) && BS_REAL_FLOAT
 #include <stdint.h>
 static inline bs_real bs_real_of_bits(uint32_t bits)
@@ -37,9 +38,11 @@ static inline bs_real bs_real_of_bits(uint32_t bits)
 #define BS_ROUNDING(m) bs_real_of_bits((uint32_t)(127 - 23 + BS_LOG2_##m) << 23)
 #define BS_LOG2_16 4
 #define BS_LOG2_64 6
+#define BS_CONSTANT(value, bits) bs_real_of_bits(bits)
 #else
 #define BS_ZERO BS_R(0.0)
 #define BS_ROUNDING(m) (BS_R(m##.0) * BS_REAL_EPS)
+#define BS_CONSTANT(value, bits) (value)
 #endif
 
 /* BS_MODES_SWITCH(count, statement): statement with the identifier MODES, the

@@ -121,7 +121,7 @@
  * the map search is the dearest part of a step). */
 #define POSITION_EVERY 16
 /* Weight of the newest sample in the running mean of e^2 (7). */
-#define GATE_MEMORY BS_R(0.00390625) /* 1/256 */
+#define GATE_MEMORY BS_CONSTANT(BS_R(0.00390625), 0x3b800000u) /* 1/256 = 2^-8: bits (127 - 8) << 23 */
 /* 8: the learning time over which the prior's variance halves [s], and the
  * persistent s error per unit of relative friction error (fig6). */
 #define FRICTION_LEARN_REF BS_R(2.0)
