@@ -484,6 +484,10 @@ BS_INLINE void problem_of_two(int n, const bs_step_constants *k, bs_contact_set 
                            const bs_real *u_beam, const bs_real *u_slider, const bs_real *u_beam_before,
                            const bs_real *u_slider_before)
 {
+    /* read back what the detection (inlined before it) wrote: kept, it
+     * spilled (here rather than in problem, whose lone corner is better off
+     * with what GCC keeps) */
+    READ_AGAIN(set);
     const bs_real *phi_a = set->phi[0], *slope_a = set->slope[0], *phi_b = set->phi[1], *slope_b = set->slope[1];
     shape_velocities va = { { MODE_0_TERM(n, phi_a[0] * u_beam[0]), MODE_0_TERM(n, slope_a[0] * u_beam[0]),
                               BS_R(0.0), BS_R(0.0) } };
@@ -552,7 +556,6 @@ BS_INLINE void problem(int n, const bs_step_constants *k, bs_contact_set *set, c
 {
     int corners, a, b, i;
 
-    READ_AGAIN(set); /* read back what the detection (inlined before it) wrote: kept, it spilled */
     corners = (set->count > 0 && set->id[0] < BS_CORNERS) + (set->count > 1 && set->id[1] < BS_CORNERS);
 
     if (set->count == 1 && corners == 1) {
