@@ -108,10 +108,10 @@ $(LIB_DIR)/libbeamslider-host-$(REAL).a: $(HOST_LIB_OBJ)
 # or Octave process loads), exporting the bs_* symbols only
 # (port/libbeamslider-host.map); soname MAJOR.MINOR: until 1.0 a minor
 # release may change the API.
-$(LIB_DIR)/libbeamslider-host-$(REAL).so.$(VERSION): $(HOST_LIB_OBJ) $(CORE_OBJ) port/libbeamslider-host.map
+$(LIB_DIR)/libbeamslider-host-$(REAL).so.$(VERSION): $(HOST_LIB_OBJ) $(CORE_LINK_OBJ) port/libbeamslider-host.map
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(LINK_LTO) -shared -Wl,-soname,libbeamslider-host-$(REAL).so.$(VERSION_MINOR) \
-	    -Wl,--version-script=port/libbeamslider-host.map -Wl,-z,defs -o $@ $(HOST_LIB_OBJ) $(CORE_OBJ) $(HOST_LIBS)
+	    -Wl,--version-script=port/libbeamslider-host.map -Wl,-z,defs -o $@ $(HOST_LIB_OBJ) $(CORE_LINK_OBJ) $(HOST_LIBS)
 
 # ---- install ------------------------------------------------------------------
 # PREFIX goes into the pkg-config files, so a relative one is made absolute.

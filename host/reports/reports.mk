@@ -46,7 +46,7 @@ REPORTS := fig6-report accuracy stability bench baseline-check harvester-report 
            embedded-report twin-firmware-report
 export PROVENANCE_CC := $(strip $(CC))
 export PROVENANCE_CFLAGS := $(strip $(CFLAGS))
-export PROVENANCE_CORE_OPT := $(strip $(CORE_OPT))
+export PROVENANCE_CORE_OPT := $(strip $(CORE_OPT) $(CORE_LTO))
 export PROVENANCE_CM_CC := $(strip $(CM_CC))
 export PROVENANCE_CM_OPT := $(strip $(CM_OPT))
 $(REPORTS): provenance-builds
