@@ -439,11 +439,11 @@ BS_INLINE void free_velocity(const bs_step_constants *k, bs_contact_set *set, in
 #endif
 }
 
-/* One corner in contact (most contact steps): its velocity and self
- * products in one pass. */
-BS_INLINE void problem_of_one(int n, const bs_step_constants *k, bs_contact_set *set,
-                           const bs_real *u_beam, const bs_real *u_slider, const bs_real *u_beam_before,
-                           const bs_real *u_slider_before)
+/* One corner's pass over the modes: its velocities and self products, then
+ * its rows of c and of the Delassus matrix. The whole problem of a lone
+ * corner (most contact steps) and the first half of two. */
+BS_INLINE void corner_pass(int n, const bs_step_constants *k, bs_contact_set *set, const bs_real *u_beam,
+                           const bs_real *u_slider, const bs_real *u_beam_before, const bs_real *u_slider_before)
 {
     const bs_real *phi = set->phi[0], *slope = set->slope[0];
     shape_velocities v = { { MODE_0_TERM(n, phi[0] * u_beam[0]), MODE_0_TERM(n, slope[0] * u_beam[0]), BS_R(0.0),
@@ -475,11 +475,11 @@ BS_INLINE void problem_of_one(int n, const bs_step_constants *k, bs_contact_set 
     delassus_block(k, set, 0, 0, dot);
 }
 
-/* Two corners in contact (the rest but a few): a's velocities and self
- * products in one pass over the modes, then b's with the cross products in
- * another (11 sums; all 18 in one pass would not fit a Cortex-M4F's 32
- * registers: they spilled), each contact's rows written when its pass ends
- * so that no sum waits through the other pass in a register. */
+/* Two corners in contact (the rest but a few): a's pass, then b's with the
+ * cross products in another (11 sums; all 18 in one pass would not fit a
+ * Cortex-M4F's 32 registers: they spilled), each contact's rows written
+ * when its pass ends so that no sum waits through the other pass in a
+ * register. */
 BS_INLINE void problem_of_two(int n, const bs_step_constants *k, bs_contact_set *set,
                            const bs_real *u_beam, const bs_real *u_slider, const bs_real *u_beam_before,
                            const bs_real *u_slider_before)
@@ -489,33 +489,11 @@ BS_INLINE void problem_of_two(int n, const bs_step_constants *k, bs_contact_set 
      * with what GCC keeps) */
     READ_AGAIN(set);
     const bs_real *phi_a = set->phi[0], *slope_a = set->slope[0], *phi_b = set->phi[1], *slope_b = set->slope[1];
-    shape_velocities va = { { MODE_0_TERM(n, phi_a[0] * u_beam[0]), MODE_0_TERM(n, slope_a[0] * u_beam[0]),
-                              BS_R(0.0), BS_R(0.0) } };
     shape_velocities vb = { { MODE_0_TERM(n, phi_b[0] * u_beam[0]), MODE_0_TERM(n, slope_b[0] * u_beam[0]),
                               BS_R(0.0), BS_R(0.0) } };
-    bs_real aa[4], bb[4], ba[4];
+    bs_real bb[4], ba[4];
     int i;
-#if BS_WITH_RESTITUTION
-    va.at[2] = MODE_0_TERM(n, phi_a[0] * u_beam_before[0]);
-    va.at[3] = MODE_0_TERM(n, slope_a[0] * u_beam_before[0]);
-#endif
-    aa[0] = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi_a[0] * phi_a[0]);
-    aa[1] = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi_a[0] * slope_a[0]);
-    aa[3] = MODE_0_TERM(n, MODE_GAIN(k, 0) * slope_a[0] * slope_a[0]);
-    for (i = 1; i < n; ++i) {
-        va.at[0] += phi_a[i] * u_beam[i];
-        va.at[1] += slope_a[i] * u_beam[i];
-#if BS_WITH_RESTITUTION
-        va.at[2] += phi_a[i] * u_beam_before[i];
-        va.at[3] += slope_a[i] * u_beam_before[i];
-#endif
-        aa[0] += MODE_GAIN(k, i) * phi_a[i] * phi_a[i];
-        aa[1] += MODE_GAIN(k, i) * phi_a[i] * slope_a[i];
-        aa[3] += MODE_GAIN(k, i) * slope_a[i] * slope_a[i];
-    }
-    aa[2] = aa[1];
-    free_velocity(k, set, 0, &va, u_slider, u_slider_before);
-    delassus_block(k, set, 0, 0, aa);
+    corner_pass(n, k, set, u_beam, u_slider, u_beam_before, u_slider_before);
 
 #if BS_WITH_RESTITUTION
     vb.at[2] = MODE_0_TERM(n, phi_b[0] * u_beam_before[0]);
@@ -559,7 +537,7 @@ BS_INLINE void problem(int n, const bs_step_constants *k, bs_contact_set *set, c
     corners = (set->count > 0 && set->id[0] < BS_CORNERS) + (set->count > 1 && set->id[1] < BS_CORNERS);
 
     if (set->count == 1 && corners == 1) {
-        problem_of_one(n, k, set, u_beam, u_slider, u_beam_before, u_slider_before);
+        corner_pass(n, k, set, u_beam, u_slider, u_beam_before, u_slider_before);
         return;
     }
     if (set->count == 2 && corners == 2) {
