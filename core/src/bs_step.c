@@ -290,13 +290,15 @@ BS_INLINE bs_status step_modes(bs_sim *sim, bs_real base_accel, const int n)
     if (status != BS_OK)
         return status;
     /* the report too is committed only with the step: a failed step leaves
-     * the sim as it was */
-    report.sweeps = 0;
-    report.systems = 0;
-    report.residual = BS_R(0.0);
-    report.converged = 1;
-    if (sim->contacts.count > 0)
+     * the sim as it was. The solve fills in all of it. */
+    if (sim->contacts.count > 0) {
         solve_contacts(sim, &s, &report);
+    } else {
+        report.sweeps = 0;
+        report.systems = 0;
+        report.residual = BS_R(0.0);
+        report.converged = 1;
+    }
     status = end_of_step(sim, &s, n);
     if (status != BS_OK)
         return status;
