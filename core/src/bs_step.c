@@ -80,8 +80,9 @@ static void add_compensated(bs_real *sum, bs_real *low, bs_real increment)
     *sum = s;
 }
 
-/* 1 and 2: midpoint configuration, smooth forces there and the free
- * velocities; BS_E_UNSTABLE if the explicit stiffness exceeds its limit. */
+/* 1 and 2: midpoint configuration, smooth forces there and the beam's free
+ * velocities (the slider's: slider_free_velocity); BS_E_UNSTABLE if the
+ * explicit stiffness exceeds its limit. */
 BS_INLINE bs_status smooth_part(const bs_sim *sim, step_state *s, const int n)
 {
     const bs_step_constants *k = &sim->k;
@@ -146,14 +147,23 @@ BS_INLINE bs_status smooth_part(const bs_sim *sim, step_state *s, const int n)
     }
     (void)piezo;
     (void)extra;
+    return BS_OK;
+}
+
+/* 2 for the slider, after the detection, which does not need it: formed
+ * before, its inputs waited through the detection in stack slots. */
+BS_INLINE void slider_free_velocity(const bs_sim *sim, step_state *s)
+{
+    const bs_step_constants *k = &sim->k;
+    int i;
+
     for (i = 0; i < 3; ++i)
         s->u_slider[i] = sim->slider_velocity[i];
 #if BS_WITH_GRAVITY
     s->u_slider[0] += k->dt_gravity[0];
     s->u_slider[1] += k->dt_gravity[1];
 #endif
-    s->u_slider[1] -= k->dt * a; /* the base frame's inertial force */
-    return BS_OK;
+    s->u_slider[1] -= k->dt * s->base_accel; /* the base frame's inertial force */
 }
 
 /* 3a: the contacts active at the midpoint, into sim->contacts;
@@ -289,6 +299,7 @@ BS_INLINE bs_status step_modes(bs_sim *sim, bs_real base_accel, const int n)
     status = find_contacts(sim, &s);
     if (status != BS_OK)
         return status;
+    slider_free_velocity(sim, &s);
     /* the report too is committed only with the step: a failed step leaves
      * the sim as it was. The solve fills in all of it. */
     if (sim->contacts.count > 0) {
