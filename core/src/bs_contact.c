@@ -602,9 +602,11 @@ BS_INLINE void percussion_of(const bs_contact_set *set, int a, bs_real *along_ph
 BS_INLINE void apply(int n, const bs_step_constants *k, const bs_contact_set *set, bs_real *u_beam,
                      bs_real *u_slider)
 {
-    bs_real push[BS_SLIDER_DOF] = { BS_R(0.0) }, along_phi[2], along_slope[2];
+    bs_real push[BS_SLIDER_DOF], along_phi[2], along_slope[2];
     int a, i;
 
+    for (i = 0; i < BS_SLIDER_DOF; ++i) /* +0 from a core register, not a literal from flash */
+        push[i] = BS_ZERO;
     if (set->count == 1 && set->id[0] < BS_CORNERS) { /* one corner (most contact steps): no loop over the set */
         percussion_of(set, 0, &along_phi[0], &along_slope[0], push);
         for (i = 0; i < n; ++i)
