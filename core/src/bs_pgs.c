@@ -637,10 +637,11 @@ BS_INLINE int pair_system(const bs_contact_set *set, const int *mode, bs_real *t
     const int kind1 = mode[1] == MODE_TAKEOFF ? 0 : (mode[1] == MODE_STICK ? 2 : 1);
     const bs_real f0 = kind0 == 1 ? fold_of(set, 0, mode[0]) : BS_R(0.0);
     const bs_real f1 = kind1 == 1 ? fold_of(set, 1, mode[1]) : BS_R(0.0);
-    for (j = 0; j < 4; ++j)
-        trial[j] = BS_R(0.0);
+    /* each case writes all four: a contact lifting off its zeros */
     switch (3 * kind0 + kind1) {
     case 0: /* both lift off */
+        for (j = 0; j < 4; ++j)
+            trial[j] = BS_R(0.0);
         return 1;
     case 1: /* 0 lifts off, 1 slips */
     case 3: { /* 0 slips, 1 lifts off */
@@ -651,6 +652,7 @@ BS_INLINE int pair_system(const bs_contact_set *set, const int *mode, bs_real *t
             return 0;
         trial[n] = -c[n] / a;
         trial[n + 1] = f * trial[n];
+        trial[2 - n] = trial[3 - n] = BS_R(0.0);
         return 1;
     }
     case 2: /* 0 lifts off, 1 sticks */
@@ -660,6 +662,7 @@ BS_INLINE int pair_system(const bs_contact_set *set, const int *mode, bs_real *t
             return 0;
         trial[n] = x[0];
         trial[n + 1] = x[1];
+        trial[2 - n] = trial[3 - n] = BS_R(0.0);
         return 1;
     }
     case 4: /* both slip */
