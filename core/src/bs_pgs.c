@@ -723,16 +723,21 @@ BS_INLINE int pair_system(const bs_contact_set *set, const int *mode, bs_real *t
 #endif
 }
 
+/* G_ij from G's upper triangle: G is symmetric, bs_contact.c writes G_ij and
+ * G_ji as one value. (With constant indices; fewer loads where the trial's
+ * system has just read the upper entries.) */
+#define UPPER(g, i, j) ((i) <= (j) ? (g)[i][j] : (g)[j][i])
+
 /* xi = G P + c of the two contacts' rows at P = set->percussion. */
 BS_INLINE void pair_velocities(const bs_contact_set *set, bs_real *xi)
 {
+    const bs_real (*g)[MAX_ROWS] = (const bs_real(*)[MAX_ROWS])set->delassus;
     const bs_real *p = set->percussion;
     int i, j;
     for (i = 0; i < 2 * ROWS; ++i) {
-        const bs_real *g = set->delassus[i];
-        bs_real v = set->free_velocity[i] + g[0] * p[0];
+        bs_real v = set->free_velocity[i] + UPPER(g, i, 0) * p[0];
         for (j = 1; j < 2 * ROWS; ++j)
-            v += g[j] * p[j];
+            v += UPPER(g, i, j) * p[j];
         xi[i] = v;
     }
 }
