@@ -285,6 +285,18 @@ BS_INLINE void commit(bs_sim *sim, const step_state *s, const bs_step_report *re
     sim->phase += 2 * sim->phase_step_half;
 }
 
+/* 4 and the commit, inlined into each of the step's two ends, with contacts
+ * and without: where the two joined, the contact path's end velocities went
+ * through the stack on the way there. */
+BS_INLINE bs_status finish(bs_sim *sim, step_state *s, const bs_step_report *report, const int n)
+{
+    const bs_status status = end_of_step(sim, s, n);
+    if (status != BS_OK)
+        return status;
+    commit(sim, s, report, n);
+    return BS_OK;
+}
+
 /* The step with mean base acceleration base_accel, for n modes. */
 BS_INLINE bs_status step_modes(bs_sim *sim, bs_real base_accel, const int n)
 {
@@ -304,17 +316,13 @@ BS_INLINE bs_status step_modes(bs_sim *sim, bs_real base_accel, const int n)
      * the sim as it was. The solve fills in all of it. */
     if (sim->contacts.count > 0) {
         solve_contacts(sim, &s, &report);
-    } else {
-        report.sweeps = 0;
-        report.systems = 0;
-        report.residual = BS_R(0.0);
-        report.converged = 1;
+        return finish(sim, &s, &report, n);
     }
-    status = end_of_step(sim, &s, n);
-    if (status != BS_OK)
-        return status;
-    commit(sim, &s, &report, n);
-    return BS_OK;
+    report.sweeps = 0;
+    report.systems = 0;
+    report.residual = BS_R(0.0);
+    report.converged = 1;
+    return finish(sim, &s, &report, n);
 }
 
 /* The step, its mode count a constant for the common counts (bs_inline.h). */
