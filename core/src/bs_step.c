@@ -263,10 +263,12 @@ BS_INLINE void commit(bs_sim *sim, const step_state *s, const bs_step_report *re
         for (r = 0; r < BS_ROWS; ++r)
             sim->percussion[id][r] = set->percussion[BS_ROWS * a + r];
     }
-    for (gone = sim->report.active & ~active, i = 0; gone; gone >>= 1, ++i)
-        if (gone & 1u)
-            for (r = 0; r < BS_ROWS; ++r)
-                sim->percussion[i][r] = BS_R(0.0);
+    gone = sim->report.active & ~active;
+    if (BS_UNLIKELY(gone)) /* rare: a contact left since the last step */
+        for (i = 0; gone; gone >>= 1, ++i)
+            if (gone & 1u)
+                for (r = 0; r < BS_ROWS; ++r)
+                    sim->percussion[i][r] = BS_R(0.0);
     sim->report.active = active; /* member by member: no memcpy in the core */
     sim->report.sweeps = report->sweeps;
     sim->report.systems = report->systems;
