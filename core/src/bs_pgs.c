@@ -499,13 +499,13 @@ static int next_mode(bs_contact_set *set, const bs_real *step, int a, int mode, 
  * wrong). Each moving contact takes the mode of its own exact solution
  * against the others (the pointed one if that is its present mode). Returns
  * the number of contacts whose law broke (0: all laws hold). */
-static int next_modes(bs_contact_set *set, const bs_real *step, int *mode, const bs_real *xi)
+BS_INLINE int next_modes_of(bs_contact_set *set, int count, const bs_real *step, int *mode, const bs_real *xi)
 {
     int next[BS_MAX_CONTACTS];
     int a, broken = 0, percussion_side = 0, largest = -1;
     bs_real size = BS_R(0.0);
 
-    for (a = 0; a < set->count; ++a) {
+    for (a = 0; a < count; ++a) {
         next[a] = pointed_mode(set, a, mode[a], &xi[ROWS * a]);
         if (next[a] != mode[a]) {
             const bs_real velocity_side = breach_size(set, a, mode[a], &xi[ROWS * a]);
@@ -518,16 +518,30 @@ static int next_modes(bs_contact_set *set, const bs_real *step, int *mode, const
             }
         }
     }
-    for (a = 0; a < set->count; ++a)
+    for (a = 0; a < count; ++a)
         if (next[a] != mode[a]
             && (percussion_side ? breach_size(set, a, mode[a], &xi[ROWS * a]) < BS_R(0.0) : a == largest))
             next[a] = next_mode(set, step, a, mode[a], &xi[ROWS * a]);
         else
             next[a] = mode[a];
-    for (a = 0; a < set->count; ++a)
+    for (a = 0; a < count; ++a)
         mode[a] = next[a];
     return broken;
 }
+
+/* next_modes_of for a pair, the count a constant (its loops unrolled), and
+ * for three or more contacts */
+static int next_pair_modes(bs_contact_set *set, const bs_real *step, int *mode, const bs_real *xi)
+{
+    return next_modes_of(set, 2, step, mode, xi);
+}
+
+#if BS_WITH_SUBSPACE
+static int next_modes(bs_contact_set *set, const bs_real *step, int *mode, const bs_real *xi)
+{
+    return next_modes_of(set, set->count, step, mode, xi);
+}
+#endif
 
 /* sum_a |P_N,a| of the warm start, which warm_mode weighs a P_N against. */
 BS_INLINE bs_real warm_total(const bs_contact_set *set, int count)
@@ -771,10 +785,10 @@ BS_INLINE int pair_laws_hold(const bs_contact_set *set, const int *mode, const b
  * fig6's two-contact steps); each trial's system solved in closed form
  * (pair_system; active_set_solve where that cannot: stick-stick, redundant
  * contacts); a trial whose laws hold by sign is the solution. Otherwise the
- * mode each broken law points to (next_modes), and a mode pair that repeats
- * gives way to the first not yet tried, in a fixed order: at most MODES^2
- * small systems, a hard bound on the work. Only where the signs do not
- * settle it is the residual computed: a trial at rounding's floor (exact,
+ * mode each broken law points to (next_pair_modes), and a mode pair that
+ * repeats gives way to the first not yet tried, in a fixed order: at most
+ * MODES^2 small systems, a hard bound on the work. Only where the signs do
+ * not settle it is the residual computed: a trial at rounding's floor (exact,
  * 64 eps s) is the solution whatever its signs, and if none holds, the P
  * with the smallest residual is kept. The near-parallel rows of two corners
  * on one face, where Gauss-Seidel crawls, cost nothing extra here. */
@@ -837,7 +851,7 @@ static void solve_pair(bs_contact_set *set, const bs_real *step, bs_goal goal, i
             for (j = 0; j < 2 * ROWS; ++j)
                 best[j] = trial[j];
         }
-        next_modes(set, step, mode, xi); /* unchanged modes: the next pair not tried */
+        next_pair_modes(set, step, mode, xi); /* unchanged modes: the next pair not tried */
     }
     for (j = 0; j < 2 * ROWS; ++j)
         set->percussion[j] = best[j];
