@@ -608,15 +608,19 @@ BS_INLINE void apply(int n, const bs_step_constants *k, const bs_contact_set *se
     for (i = 0; i < BS_SLIDER_DOF; ++i) /* +0 from a core register, not a literal from flash */
         push[i] = BS_ZERO;
     if (set->count == 1 && set->id[0] < BS_CORNERS) { /* one corner (most contact steps): no loop over the set */
+        const bs_real (*slope)[BS_MAX_MODES] = set->slope;
+        READ_AGAIN(slope); /* beyond a VLDR's reach of the sim: one base, not an address computed for each */
         percussion_of(set, 0, &along_phi[0], &along_slope[0], push);
         for (i = 0; i < n; ++i)
-            u_beam[i] += MODE_GAIN(k, i) * (along_phi[0] * set->phi[0][i] + along_slope[0] * set->slope[0][i]);
+            u_beam[i] += MODE_GAIN(k, i) * (along_phi[0] * set->phi[0][i] + along_slope[0] * slope[0][i]);
     } else if (set->count == 2 && set->id[1] < BS_CORNERS) { /* two corners: one pass over the modes */
+        const bs_real (*slope)[BS_MAX_MODES] = set->slope;
+        READ_AGAIN(slope);
         percussion_of(set, 0, &along_phi[0], &along_slope[0], push);
         percussion_of(set, 1, &along_phi[1], &along_slope[1], push);
         for (i = 0; i < n; ++i)
-            u_beam[i] += MODE_GAIN(k, i) * ((along_phi[0] * set->phi[0][i] + along_slope[0] * set->slope[0][i])
-                                            + (along_phi[1] * set->phi[1][i] + along_slope[1] * set->slope[1][i]));
+            u_beam[i] += MODE_GAIN(k, i) * ((along_phi[0] * set->phi[0][i] + along_slope[0] * slope[0][i])
+                                            + (along_phi[1] * set->phi[1][i] + along_slope[1] * slope[1][i]));
     } else {
         for (a = 0; a < set->count; ++a) {
             percussion_of(set, a, &along_phi[0], &along_slope[0], push);
