@@ -233,12 +233,19 @@ BS_INLINE int side_of_slot(int n, const bs_scene *scene, const bs_step_constants
         bottom.t = k->slope_scale * (x_bottom - cache->centre);
     }
     /* w = sum_m s_m t^m with s_m = sum_k q_k b[k][m]: the modes summed once
-     * for both corners (0 inside a clamp, which moves with the base) */
+     * for both corners (0 inside a clamp, which moves with the base), mode
+     * by mode from its coefficients loaded at once (bs_shape_terms), each
+     * sum begun with its mode-0 term (0 for a rigid beam: no modes) */
     for (m = 0; m < BS_SHAPE_TERMS; ++m)
-        sum[m] = MODE_0_TERM(n, frame->q_beam[0] * cache->coef[0][m]);
-    for (i = 1; i < n; ++i)
+        sum[m] = BS_R(0.0);
+    for (i = 0; i < n; ++i) {
+        const bs_real q = frame->q_beam[i];
+        bs_real b[BS_SHAPE_TERMS];
+        bs_shape_terms(cache->coef[i], b);
         for (m = 0; m < BS_SHAPE_TERMS; ++m)
-            sum[m] += frame->q_beam[i] * cache->coef[i][m];
+            sum[m] = i > 0 ? sum[m] + q * b[m] : q * b[m];
+        BS_SHAPE_TERMS_HERE(sum);
+    }
     bs_shape_taylor(sum, top.t, &w, &dw);
     top.w = top.on_beam ? w : BS_R(0.0);
     top.w_slope = top.on_beam ? k->slope_scale * dw : BS_R(0.0);
