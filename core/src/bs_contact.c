@@ -219,13 +219,16 @@ BS_INLINE int side_of_slot(int n, const bs_scene *scene, const bs_step_constants
                         bs_contact_set *set)
 {
     const bs_real hh = k->half_thickness;
-    bs_real sum[BS_SHAPE_TERMS];
+    const int first = top_id < bottom_id ? top_id : bottom_id;
+    bs_real rho[4], sum[BS_SHAPE_TERMS];
     corner_point top, bottom;
     bs_real w, dw, d_top, d_bottom;
     int i, m;
 
-    locate_corner(k, frame, k->corner[top_id], cos_beta, sin_beta, cache->centre, &top);
-    locate_corner(k, frame, k->corner[bottom_id], cos_beta, sin_beta, cache->centre, &bottom);
+    /* the side's corners, neighbours in k->corner (P1, P2 and P3, P4): one load */
+    bs_load_4(&k->corner[0][0] + 2 * first, rho);
+    locate_corner(k, frame, &rho[2 * (top_id - first)], cos_beta, sin_beta, cache->centre, &top);
+    locate_corner(k, frame, &rho[2 * (bottom_id - first)], cos_beta, sin_beta, cache->centre, &bottom);
     if (!(bs_fabs(top.t) <= frame->reach && bs_fabs(bottom.t) <= frame->reach)) {
         const bs_real x_top = frame->x_kinematic + top.arm_x, x_bottom = frame->x_kinematic + bottom.arm_x;
         bs_shape_expand(scene, BS_R(0.5) * (x_top + x_bottom), cache);

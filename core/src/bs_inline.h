@@ -45,6 +45,33 @@ static inline bs_real bs_real_of_bits(uint32_t bits)
 #define BS_CONSTANT(value, bits) (value)
 #endif
 
+/* v[i] = p[i], i < 4. A Cortex-M4F loads N consecutive words in 1 + N
+ * cycles with one vldm, in 2N with the vldr that GCC issues: with its FPU
+ * and float, one vldm into s0-s3 (named: a vldm fills consecutive
+ * registers), the "m" operand ordering it after stores to p[0..3]; the
+ * values are to be used where they were loaded. Elsewhere a copy. */
+#if defined(__GNUC__) && defined(__ARM_FP) && BS_REAL_FLOAT
+#define BS_LOAD_4_VLDM 1
+BS_INLINE void bs_load_4(const bs_real *p, bs_real *v)
+{
+    register bs_real v0 __asm__("s0"), v1 __asm__("s1"), v2 __asm__("s2"), v3 __asm__("s3");
+    __asm__("vldmia %4, {%0, %1, %2, %3}" : "=t"(v0), "=t"(v1), "=t"(v2), "=t"(v3) : "r"(p), "m"(*(const bs_real(*)[4])p));
+    v[0] = v0;
+    v[1] = v1;
+    v[2] = v2;
+    v[3] = v3;
+}
+#else
+#define BS_LOAD_4_VLDM 0
+BS_INLINE void bs_load_4(const bs_real *p, bs_real *v)
+{
+    v[0] = p[0];
+    v[1] = p[1];
+    v[2] = p[2];
+    v[3] = p[3];
+}
+#endif
+
 /* BS_MODES_SWITCH(count, statement): statement with the identifier MODES, the
  * mode count, a compile-time constant: the scene's with a compiled scene,
  * else count itself for 1..8 modes (one copy of the statement each), so that

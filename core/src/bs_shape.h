@@ -37,27 +37,14 @@ static inline bs_real bs_shape_offset(const bs_scene *scene, const bs_shape_cach
  * polynomial in t (BS_SHAPE_TERMS terms) of the piece polynomial there. */
 void bs_shape_expand(const bs_scene *scene, bs_real x, bs_shape_cache *cache);
 
-/* c[m] = coef[m], m < BS_SHAPE_TERMS: one mode's expansion coefficients, to
- * be used where they were loaded. A Cortex-M4F loads N consecutive words in
- * 1 + N cycles with one vldm, in 2N with the vldr that GCC issues; the float
- * expansion's four are written out as one, into s0-s3 (named: a vldm fills
- * consecutive registers). The "m" operand orders it after the cache's stores.
- * BS_SHAPE_TERMS_HERE(s) has the terms s[m] computed where it stands, in
- * registers (an empty asm that may change them): else GCC computes sums over
- * the modes term by term, all modes' coefficients loaded first, and the
- * registers named for the next load are spilled to the stack. */
-#if defined(__GNUC__) && defined(__ARM_FP) && BS_REAL_FLOAT && BS_SHAPE_TERMS == 4
-BS_INLINE void bs_shape_terms(const bs_real *coef, bs_real *c)
-{
-    register bs_real c0 __asm__("s0"), c1 __asm__("s1"), c2 __asm__("s2"), c3 __asm__("s3");
-    __asm__("vldmia %4, {%0, %1, %2, %3}"
-            : "=t"(c0), "=t"(c1), "=t"(c2), "=t"(c3)
-            : "r"(coef), "m"(*(const bs_real(*)[4])coef));
-    c[0] = c0;
-    c[1] = c1;
-    c[2] = c2;
-    c[3] = c3;
-}
+/* c[m] = coef[m], m < BS_SHAPE_TERMS: one mode's expansion coefficients,
+ * the float expansion's four with one load (bs_load_4), to be used where
+ * they were loaded. BS_SHAPE_TERMS_HERE(s) has the terms s[m] computed where
+ * it stands, in registers (an empty asm that may change them): else GCC
+ * computes sums over the modes term by term, all modes' coefficients loaded
+ * first, and the registers of the next load are spilled to the stack. */
+#if BS_LOAD_4_VLDM && BS_SHAPE_TERMS == 4
+#define bs_shape_terms bs_load_4
 #define BS_SHAPE_TERMS_HERE(s) __asm__("" : "+t"((s)[0]), "+t"((s)[1]), "+t"((s)[2]), "+t"((s)[3]))
 #else
 BS_INLINE void bs_shape_terms(const bs_real *coef, bs_real *c)
