@@ -65,6 +65,7 @@
 #include "bs_inline.h"
 #include "bs_port.h"
 #include "bs_shape.h"
+#include "bs_sim_internal.h"
 
 /* The beam part of M^-1: the implicit step's mode gains (prepared as 1 for
  * an explicit scene); a build without the implicit step multiplies by
@@ -229,7 +230,8 @@ BS_INLINE int side_of_slot(int n, const bs_scene *scene, const bs_step_constants
     bs_load_4(&k->corner[0][0] + 2 * first, rho);
     locate_corner(k, frame, &rho[2 * (top_id - first)], cos_beta, sin_beta, cache->centre, &top);
     locate_corner(k, frame, &rho[2 * (bottom_id - first)], cos_beta, sin_beta, cache->centre, &bottom);
-    if (!(bs_fabs(top.t) <= frame->reach && bs_fabs(bottom.t) <= frame->reach)) {
+    /* a new expansion: once in many steps (bs_shape.c), off the straight path */
+    if (BS_UNLIKELY(!(bs_fabs(top.t) <= frame->reach && bs_fabs(bottom.t) <= frame->reach))) {
         const bs_real x_top = frame->x_kinematic + top.arm_x, x_bottom = frame->x_kinematic + bottom.arm_x;
         bs_shape_expand(scene, BS_R(0.5) * (x_top + x_bottom), cache);
         top.t = k->slope_scale * (x_top - cache->centre);
