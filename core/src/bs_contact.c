@@ -222,6 +222,7 @@ BS_INLINE int side_of_slot(int n, const bs_scene *scene, const bs_step_constants
     const bs_real hh = k->half_thickness;
     const int first = top_id < bottom_id ? top_id : bottom_id;
     bs_real rho[4], sum[BS_SHAPE_TERMS];
+    const bs_real *row; /* of cache->coef: mode i's coefficients, then i + 1's */
     corner_point top, bottom;
     bs_real w, dw, d_top, d_bottom;
     int i, m;
@@ -243,10 +244,11 @@ BS_INLINE int side_of_slot(int n, const bs_scene *scene, const bs_step_constants
      * sum begun with its mode-0 term (0 for a rigid beam: no modes) */
     for (m = 0; m < BS_SHAPE_TERMS; ++m)
         sum[m] = BS_R(0.0);
+    row = cache->coef[0];
     for (i = 0; i < n; ++i) {
         const bs_real q = frame->q_beam[i];
         bs_real b[BS_SHAPE_TERMS];
-        bs_shape_terms(cache->coef[i], b);
+        bs_shape_terms(&row, b);
         for (m = 0; m < BS_SHAPE_TERMS; ++m)
             sum[m] = i > 0 ? sum[m] + q * b[m] : q * b[m];
         BS_SHAPE_TERMS_HERE(sum);

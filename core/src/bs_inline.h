@@ -61,6 +61,20 @@ BS_INLINE void bs_load_4(const bs_real *p, bs_real *v)
     v[2] = v2;
     v[3] = v3;
 }
+
+/* bs_load_4 of *p, then *p += 4: consecutive groups of four, the address
+ * advanced by the load itself (vldmia with write-back), no arithmetic. */
+BS_INLINE void bs_load_4_next(const bs_real **p, bs_real *v)
+{
+    register bs_real v0 __asm__("s0"), v1 __asm__("s1"), v2 __asm__("s2"), v3 __asm__("s3");
+    __asm__("vldmia %4!, {%0, %1, %2, %3}"
+            : "=t"(v0), "=t"(v1), "=t"(v2), "=t"(v3), "+r"(*p)
+            : "m"(*(const bs_real(*)[4])*p));
+    v[0] = v0;
+    v[1] = v1;
+    v[2] = v2;
+    v[3] = v3;
+}
 #else
 #define BS_LOAD_4_VLDM 0
 BS_INLINE void bs_load_4(const bs_real *p, bs_real *v)
@@ -69,6 +83,12 @@ BS_INLINE void bs_load_4(const bs_real *p, bs_real *v)
     v[1] = p[1];
     v[2] = p[2];
     v[3] = p[3];
+}
+
+BS_INLINE void bs_load_4_next(const bs_real **p, bs_real *v)
+{
+    bs_load_4(*p, v);
+    *p += 4;
 }
 #endif
 

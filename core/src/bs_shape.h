@@ -37,21 +37,23 @@ static inline bs_real bs_shape_offset(const bs_scene *scene, const bs_shape_cach
  * polynomial in t (BS_SHAPE_TERMS terms) of the piece polynomial there. */
 void bs_shape_expand(const bs_scene *scene, bs_real x, bs_shape_cache *cache);
 
-/* c[m] = coef[m], m < BS_SHAPE_TERMS: one mode's expansion coefficients,
- * the float expansion's four with one load (bs_load_4), to be used where
- * they were loaded. BS_SHAPE_TERMS_HERE(s) has the terms s[m] computed where
- * it stands, in registers (an empty asm that may change them): else GCC
+/* c[m] = (*row)[m], m < BS_SHAPE_TERMS, then *row += BS_SHAPE_TERMS: one
+ * mode's expansion coefficients, the next mode's row after it; the float
+ * expansion's four with one load (bs_load_4_next), to be used where they
+ * were loaded. BS_SHAPE_TERMS_HERE(s) has the terms s[m] computed where it
+ * stands, in registers (an empty asm that may change them): else GCC
  * computes sums over the modes term by term, all modes' coefficients loaded
  * first, and the registers of the next load are spilled to the stack. */
 #if BS_LOAD_4_VLDM && BS_SHAPE_TERMS == 4
-#define bs_shape_terms bs_load_4
+#define bs_shape_terms bs_load_4_next
 #define BS_SHAPE_TERMS_HERE(s) __asm__("" : "+t"((s)[0]), "+t"((s)[1]), "+t"((s)[2]), "+t"((s)[3]))
 #else
-BS_INLINE void bs_shape_terms(const bs_real *coef, bs_real *c)
+BS_INLINE void bs_shape_terms(const bs_real **row, bs_real *c)
 {
     int m;
     for (m = 0; m < BS_SHAPE_TERMS; ++m)
-        c[m] = coef[m];
+        c[m] = (*row)[m];
+    *row += BS_SHAPE_TERMS;
 }
 #define BS_SHAPE_TERMS_HERE(s) ((void)(s))
 #endif
@@ -80,6 +82,7 @@ BS_INLINE void bs_shape_taylor(const bs_real *c, bs_real t, bs_real *value, bs_r
 BS_INLINE void bs_shape_expanded(int n, const bs_shape_cache *cache, bs_real t, int on_beam, bs_real slope_scale,
                                  bs_real *phi, bs_real *slope)
 {
+    const bs_real *row = cache->coef[0]; /* mode k's coefficients, then k + 1's */
     int k;
     if (!on_beam) { /* inside a clamp, which moves with the base */
         for (k = 0; k < n; ++k)
@@ -88,7 +91,7 @@ BS_INLINE void bs_shape_expanded(int n, const bs_shape_cache *cache, bs_real t, 
     }
     for (k = 0; k < n; ++k) {
         bs_real b[BS_SHAPE_TERMS], value, derivative;
-        bs_shape_terms(cache->coef[k], b);
+        bs_shape_terms(&row, b);
         bs_shape_taylor(b, t, &value, &derivative);
         phi[k] = value;
         slope[k] = slope_scale * derivative;
