@@ -195,9 +195,10 @@ BS_INLINE void add_corner(int n, const bs_step_constants *k, const bs_shape_cach
 }
 
 /* The slot corner rho at the slider pose: its arm A rho, height, offset in
- * the side's expansion (t) and whether it is over the beam. */
-BS_INLINE void locate_corner(const bs_step_constants *k, const bs_contact_frame *frame, const bs_real *rho,
-                          bs_real cos_beta, bs_real sin_beta, bs_real centre, corner_point *p)
+ * the side's expansion (t) and whether it is over the beam (length: L, read
+ * once for a side's two corners; read here, it was read for each). */
+BS_INLINE void locate_corner(const bs_step_constants *k, bs_real length, const bs_contact_frame *frame,
+                             const bs_real *rho, bs_real cos_beta, bs_real sin_beta, bs_real centre, corner_point *p)
 {
     bs_real x;
     p->arm_x = cos_beta * rho[0] + sin_beta * rho[1];
@@ -205,7 +206,7 @@ BS_INLINE void locate_corner(const bs_step_constants *k, const bs_contact_frame 
     x = frame->x_kinematic + p->arm_x;
     p->z = frame->z + p->arm_z;
     p->t = k->slope_scale * (x - centre);
-    p->on_beam = x >= BS_R(0.0) && x <= k->length;
+    p->on_beam = x >= BS_R(0.0) && x <= length;
 }
 
 /* One side of the slot: its top corner (P1 or P4, zeta = +1) and bottom
@@ -219,7 +220,7 @@ BS_INLINE int side_of_slot(int n, const bs_scene *scene, const bs_step_constants
                         bs_shape_cache *cache, int top_id, int bottom_id, bs_real cos_beta, bs_real sin_beta,
                         bs_contact_set *set)
 {
-    const bs_real hh = k->half_thickness;
+    const bs_real hh = k->half_thickness, length = k->length;
     const int first = top_id < bottom_id ? top_id : bottom_id;
     bs_real rho[4], sum[BS_SHAPE_TERMS];
     const bs_real *row; /* of cache->coef: mode i's coefficients, then i + 1's */
@@ -229,8 +230,8 @@ BS_INLINE int side_of_slot(int n, const bs_scene *scene, const bs_step_constants
 
     /* the side's corners, neighbours in k->corner (P1, P2 and P3, P4): one load */
     bs_load_4(&k->corner[0][0] + 2 * first, rho);
-    locate_corner(k, frame, &rho[2 * (top_id - first)], cos_beta, sin_beta, cache->centre, &top);
-    locate_corner(k, frame, &rho[2 * (bottom_id - first)], cos_beta, sin_beta, cache->centre, &bottom);
+    locate_corner(k, length, frame, &rho[2 * (top_id - first)], cos_beta, sin_beta, cache->centre, &top);
+    locate_corner(k, length, frame, &rho[2 * (bottom_id - first)], cos_beta, sin_beta, cache->centre, &bottom);
     /* a new expansion: once in many steps (bs_shape.c), off the straight path */
     if (BS_UNLIKELY(!(bs_fabs(top.t) <= frame->reach && bs_fabs(bottom.t) <= frame->reach))) {
         const bs_real x_top = frame->x_kinematic + top.arm_x, x_bottom = frame->x_kinematic + bottom.arm_x;
