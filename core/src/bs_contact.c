@@ -140,12 +140,12 @@ typedef struct corner_point {
 
 /* Appends corner (its point p, zeta its side of the beam) to the active
  * set: its phi and phi', the coefficients of its rows' beam parts and their
- * slider parts. d_z = z_P - w - zeta h/2, already found in contact. */
+ * slider parts. d_z = z_P - w - zeta h/2, already found in contact; hh = h/2
+ * as the side has it (read again here, it cost a load a corner). */
 BS_INLINE void add_corner(int n, const bs_step_constants *k, const bs_shape_cache *cache, int corner,
-                          bs_real zeta, bs_real d_z, const corner_point *p, const bs_real (*warm)[BS_ROWS],
+                          bs_real hh, bs_real zeta, bs_real d_z, const corner_point *p, const bs_real (*warm)[BS_ROWS],
                           bs_contact_set *set)
 {
-    const bs_real hh = k->half_thickness;
     const bs_real w_slope = p->w_slope;
     const bs_real d_x = zeta * hh * w_slope;
     const bs_real cos_alpha = cos_of_slope(k->series, w_slope);
@@ -266,14 +266,14 @@ BS_INLINE int side_of_slot(int n, const bs_scene *scene, const bs_step_constants
     if (d_top - hh * top.w_slope * top.w_slope < BS_R(0.0)) {
         if (d_top + hh < BS_R(0.0))
             return 1;
-        add_corner(n, k, cache, top_id, BS_R(1.0), d_top, &top, frame->warm, set);
+        add_corner(n, k, cache, top_id, hh, BS_R(1.0), d_top, &top, frame->warm, set);
     }
     bottom_sq = hh * bottom.w_slope * bottom.w_slope;
     BS_HERE(bottom_sq);
     if (-d_bottom - bottom_sq < BS_R(0.0)) {
         if (-d_bottom + hh < BS_R(0.0))
             return 1;
-        add_corner(n, k, cache, bottom_id, BS_R(-1.0), d_bottom, &bottom, frame->warm, set);
+        add_corner(n, k, cache, bottom_id, hh, BS_R(-1.0), d_bottom, &bottom, frame->warm, set);
     }
     return 0;
 }
