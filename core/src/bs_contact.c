@@ -308,7 +308,8 @@ BS_INLINE void rotation(const bs_real *c, bs_real beta, bs_real *cos_beta, bs_re
     bs_real lead[4]; /* c[SMALL_SQ] .. c[SIN_42], one load (bs_load_4) */
     bs_load_4(c, lead);
     if (b2 < lead[SMALL_SQ]) { /* multiplications by 1/6, 1/20, ...: no division */
-        *sin_beta = beta * (BS_R(1.0) - b2 * lead[SIN_6] * (BS_R(1.0) - b2 * lead[SIN_20] * (BS_R(1.0) - b2 * lead[SIN_42])));
+        *sin_beta = beta * (BS_R(1.0) - b2 * lead[SIN_6]
+                            * (BS_R(1.0) - b2 * lead[SIN_20] * (BS_R(1.0) - b2 * lead[SIN_42])));
         *cos_beta = BS_R(1.0) - b2 * BS_R(0.5)
                     * (BS_R(1.0) - b2 * c[COS_12] * (BS_R(1.0) - b2 * c[COS_30] * (BS_R(1.0) - b2 * c[COS_56])));
         return;

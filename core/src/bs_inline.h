@@ -55,7 +55,9 @@ static inline bs_real bs_real_of_bits(uint32_t bits)
 BS_INLINE void bs_load_4(const bs_real *p, bs_real *v)
 {
     register bs_real v0 __asm__("s0"), v1 __asm__("s1"), v2 __asm__("s2"), v3 __asm__("s3");
-    __asm__("vldmia %4, {%0, %1, %2, %3}" : "=t"(v0), "=t"(v1), "=t"(v2), "=t"(v3) : "r"(p), "m"(*(const bs_real(*)[4])p));
+    __asm__("vldmia %4, {%0, %1, %2, %3}"
+            : "=t"(v0), "=t"(v1), "=t"(v2), "=t"(v3)
+            : "r"(p), "m"(*(const bs_real(*)[4])p));
     v[0] = v0;
     v[1] = v1;
     v[2] = v2;
