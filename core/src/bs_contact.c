@@ -65,7 +65,6 @@
 #include "bs_inline.h"
 #include "bs_port.h"
 #include "bs_shape.h"
-#include "bs_sim_internal.h"
 
 /* The beam part of M^-1: the implicit step's mode gains (prepared as 1 for
  * an explicit scene); a build without the implicit step multiplies by

@@ -9,17 +9,6 @@
 #include "bs_inline.h"
 #include "bs_sim_layout.h"
 
-/* Which way the step's tests mostly go, for the compiler to lay the common
- * path out straight (GCC and Clang; elsewhere nothing): on a Cortex-M a
- * taken branch costs a pipeline refill. No effect on any result. */
-#if defined(__GNUC__)
-#define BS_LIKELY(x) __builtin_expect(!!(x), 1)
-#define BS_UNLIKELY(x) __builtin_expect(!!(x), 0)
-#else
-#define BS_LIKELY(x) (x)
-#define BS_UNLIKELY(x) (x)
-#endif
-
 /* bs_sim.ready of an initialised sim ("mmmm"); anything else is not ready.
  * One byte repeated: a Thumb-2 immediate, which the check of every step
  * compares with directly instead of reading a literal from flash. */
