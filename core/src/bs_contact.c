@@ -224,7 +224,7 @@ BS_INLINE int side_of_slot(int n, const bs_scene *scene, const bs_step_constants
     bs_real rho[4], sum[BS_SHAPE_TERMS];
     const bs_real *row; /* of cache->coef: mode i's coefficients, then i + 1's */
     corner_point top, bottom;
-    bs_real w, dw, d_top, d_bottom, bottom_sq; /* h/2 w'^2 at the bottom corner */
+    bs_real w, dw, d_top, d_bottom;
     int i, m;
 
     /* the side's corners, neighbours in k->corner (P1, P2 and P3, P4): one load */
@@ -267,9 +267,7 @@ BS_INLINE int side_of_slot(int n, const bs_scene *scene, const bs_step_constants
             return 1;
         add_corner(n, k, cache, top_id, hh, BS_R(1.0), d_top, &top, frame->warm, set);
     }
-    bottom_sq = hh * bottom.w_slope * bottom.w_slope;
-    BS_HERE(bottom_sq);
-    if (-d_bottom - bottom_sq < BS_R(0.0)) {
+    if (-d_bottom - hh * bottom.w_slope * bottom.w_slope < BS_R(0.0)) {
         if (-d_bottom + hh < BS_R(0.0))
             return 1;
         add_corner(n, k, cache, bottom_id, hh, BS_R(-1.0), d_bottom, &bottom, frame->warm, set);

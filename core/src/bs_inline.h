@@ -88,14 +88,7 @@ BS_INLINE void bs_load_4_next(const bs_real **p, bs_real *v)
     v[2] = v2;
     v[3] = v3;
 }
-
-/* BS_HERE(x): the float x computed where this stands, in a register (an
- * empty asm that may change it): not merged into the operation that uses
- * it, e.g. a - b c into vnmla (3 cycles, and a vmov to its register) where
- * vmul and vsub take 1 each; the same operations and roundings. */
-#define BS_HERE(x) __asm__("" : "+t"(x))
 #else
-#define BS_HERE(x) ((void)(x))
 #define BS_LOAD_4_VLDM 0
 BS_INLINE void bs_load_4(const bs_real *p, bs_real *v)
 {
