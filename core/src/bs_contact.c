@@ -458,11 +458,11 @@ BS_INLINE void free_velocity(const bs_step_constants *k, bs_contact_set *set, in
 
 /* One corner's pass over the modes: its velocities and self products, then
  * its rows of c and of the Delassus matrix. The whole problem of a lone
- * corner (most contact steps) and the first half of two. */
-BS_INLINE void corner_pass(int n, const bs_step_constants *k, bs_contact_set *set, const bs_real *u_beam,
+ * corner (most contact steps), and the first and last pass of two. */
+BS_INLINE void corner_pass(int n, const bs_step_constants *k, bs_contact_set *set, int a, const bs_real *u_beam,
                            const bs_real *u_slider, const bs_real *u_beam_before, const bs_real *u_slider_before)
 {
-    const bs_real *phi = set->phi[0], *slope = set->slope[0];
+    const bs_real *phi = set->phi[a], *slope = set->slope[a];
     shape_velocities v = { { MODE_0_TERM(n, phi[0] * u_beam[0]), MODE_0_TERM(n, slope[0] * u_beam[0]), BS_R(0.0),
                              BS_R(0.0) } };
     bs_real dot[4];
@@ -488,62 +488,28 @@ BS_INLINE void corner_pass(int n, const bs_step_constants *k, bs_contact_set *se
     }
     (void)u_beam_before;
     dot[2] = dot[1];
-    free_velocity(k, set, 0, &v, u_slider, u_slider_before);
-    delassus_block(k, set, 0, 0, dot);
+    free_velocity(k, set, a, &v, u_slider, u_slider_before);
+    delassus_block(k, set, a, a, dot);
 }
 
-/* Two corners in contact (the rest but a few): a's pass, then b's with the
- * cross products in another (11 sums; all 18 in one pass would not fit a
- * Cortex-M4F's 32 registers: they spilled), each contact's rows written
- * when its pass ends so that no sum waits through the other pass in a
- * register. */
+/* Two corners in contact (the rest but a few): a pass for each corner
+ * (corner_pass) and one between them for the cross products, each with its
+ * rows written when it ends: at most 4 + 20 sums and shape values live at
+ * once (in two passes, the second's 11 sums beside both corners' 20 values
+ * spilled, and the velocities reloaded). */
 BS_INLINE void problem_of_two(int n, const bs_step_constants *k, bs_contact_set *set,
                            const bs_real *u_beam, const bs_real *u_slider, const bs_real *u_beam_before,
                            const bs_real *u_slider_before)
 {
+    bs_real dot[4];
     /* read back what the detection (inlined before it) wrote: kept, it
      * spilled (here rather than in problem, whose lone corner is better off
      * with what GCC keeps) */
     READ_AGAIN(set);
-    const bs_real *phi_a = set->phi[0], *slope_a = set->slope[0], *phi_b = set->phi[1], *slope_b = set->slope[1];
-    shape_velocities vb = { { MODE_0_TERM(n, phi_b[0] * u_beam[0]), MODE_0_TERM(n, slope_b[0] * u_beam[0]),
-                              BS_R(0.0), BS_R(0.0) } };
-    bs_real bb[4], ba[4];
-    int i;
-    corner_pass(n, k, set, u_beam, u_slider, u_beam_before, u_slider_before);
-
-#if BS_WITH_RESTITUTION
-    vb.at[2] = MODE_0_TERM(n, phi_b[0] * u_beam_before[0]);
-    vb.at[3] = MODE_0_TERM(n, slope_b[0] * u_beam_before[0]);
-#endif
-    (void)u_beam_before;
-    bb[0] = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi_b[0] * phi_b[0]);
-    bb[1] = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi_b[0] * slope_b[0]);
-    bb[3] = MODE_0_TERM(n, MODE_GAIN(k, 0) * slope_b[0] * slope_b[0]);
-    ba[0] = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi_b[0] * phi_a[0]);
-    ba[1] = MODE_0_TERM(n, MODE_GAIN(k, 0) * phi_b[0] * slope_a[0]);
-    ba[2] = MODE_0_TERM(n, MODE_GAIN(k, 0) * slope_b[0] * phi_a[0]);
-    ba[3] = MODE_0_TERM(n, MODE_GAIN(k, 0) * slope_b[0] * slope_a[0]);
-    for (i = 1; i < n; ++i) {
-        const bs_real gp = MODE_GAIN(k, i) * phi_b[i], gs = MODE_GAIN(k, i) * slope_b[i];
-        vb.at[0] += phi_b[i] * u_beam[i];
-        vb.at[1] += slope_b[i] * u_beam[i];
-#if BS_WITH_RESTITUTION
-        vb.at[2] += phi_b[i] * u_beam_before[i];
-        vb.at[3] += slope_b[i] * u_beam_before[i];
-#endif
-        bb[0] += gp * phi_b[i];
-        bb[1] += gp * slope_b[i];
-        bb[3] += gs * slope_b[i];
-        ba[0] += gp * phi_a[i];
-        ba[1] += gp * slope_a[i];
-        ba[2] += gs * phi_a[i];
-        ba[3] += gs * slope_a[i];
-    }
-    bb[2] = bb[1];
-    free_velocity(k, set, 1, &vb, u_slider, u_slider_before);
-    delassus_block(k, set, 1, 1, bb);
-    delassus_block(k, set, 1, 0, ba);
+    corner_pass(n, k, set, 0, u_beam, u_slider, u_beam_before, u_slider_before);
+    cross_products(n, k, set, 1, 0, dot);
+    delassus_block(k, set, 1, 0, dot);
+    corner_pass(n, k, set, 1, u_beam, u_slider, u_beam_before, u_slider_before);
 }
 
 BS_INLINE void problem(int n, const bs_step_constants *k, bs_contact_set *set, const bs_real *u_beam,
@@ -554,7 +520,7 @@ BS_INLINE void problem(int n, const bs_step_constants *k, bs_contact_set *set, c
     corners = (set->count > 0 && set->id[0] < BS_CORNERS) + (set->count > 1 && set->id[1] < BS_CORNERS);
 
     if (set->count == 1 && corners == 1) {
-        corner_pass(n, k, set, u_beam, u_slider, u_beam_before, u_slider_before);
+        corner_pass(n, k, set, 0, u_beam, u_slider, u_beam_before, u_slider_before);
         return;
     }
     if (set->count == 2 && corners == 2) {
