@@ -506,6 +506,12 @@ BS_INLINE void problem_of_two(int n, const bs_step_constants *k, bs_contact_set 
      * spilled (here rather than in problem, whose lone corner is better off
      * with what GCC keeps) */
     READ_AGAIN(set);
+    /* and the step's velocities, its own arrays: GCC read each of u_beam's
+     * again at every product, four times in all (mid-fig6-float 2455.6 ->
+     * 2441.9 cycles a step with u_slider's; the same for u_beam_before,
+     * u_slider_before or k cost 3 to 5 more) */
+    READ_AGAIN(u_beam);
+    READ_AGAIN(u_slider);
     corner_pass(n, k, set, 0, u_beam, u_slider, u_beam_before, u_slider_before);
     cross_products(n, k, set, 1, 0, dot);
     delassus_block(k, set, 1, 0, dot);
