@@ -135,12 +135,13 @@ BS_INLINE void velocity(const bs_contact_set *set, int a, bs_real *xi)
     xi[0] = v_n;
 }
 
-/* prox of the contact laws with step r: P_N first, then P_T in the new cone. */
+/* prox of the contact laws with step r: P_N first, then P_T in the new cone
+ * (a P_N of +0 from a core register, BS_ZERO, not a literal from flash). */
 BS_INLINE void prox(const bs_contact_set *set, int a, bs_real step, const bs_real *xi, const bs_real *p,
                  bs_real *out)
 {
     const bs_real p_n = p[0] - step * xi[0];
-    out[0] = p_n > BS_R(0.0) ? p_n : BS_R(0.0);
+    out[0] = p_n > BS_R(0.0) ? p_n : BS_ZERO;
 #if BS_WITH_FRICTION
     {
         const bs_real limit = set->mu[a] * out[0];
