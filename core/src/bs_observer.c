@@ -251,7 +251,7 @@ static bs_real twin_power(const bs_sim *sim)
     return sim->power;
 #else
     (void)sim;
-    return BS_R(0.0);
+    return BS_ZERO; /* low-passed every sample: not a literal read from flash */
 #endif
 }
 
@@ -490,7 +490,7 @@ static void correction_of(bs_observer *obs, const bs_sim *sim, bs_real e, correc
 #endif
     add_compensated(&c->slider[0], &c->x_low, obs->com_offset * dw_slope);
     c->velocity[0] += obs->com_offset * dv_slope;
-    c->voltage = BS_R(0.0);
+    c->voltage = BS_ZERO; /* the first term of commit_correction's sum: not a literal read from flash */
 #if BS_WITH_PIEZO
     if (scene->load != BS_LOAD_NONE)
         c->voltage = sim->voltage + (from[2 * n] + within * change[2 * n]) * e;
