@@ -534,7 +534,7 @@ static int beyond_gate(bs_observer *obs, bs_real e)
     const bs_real limit_sq = obs->options.outlier_gate * obs->options.outlier_gate * scale_sq;
     const bs_real e_sq = e * e;
     const int beyond = !(e_sq <= limit_sq); /* e^2 may overflow: infinity is beyond */
-    obs->innovation_sq += GATE_MEMORY * ((beyond ? limit_sq : e_sq) - obs->innovation_sq);
+    obs->innovation_sq += GATE_MEMORY * ((BS_UNLIKELY(beyond) ? limit_sq : e_sq) - obs->innovation_sq);
     return beyond;
 }
 
