@@ -21,7 +21,7 @@ TEST_PACKAGES += $(PYTHON_PACKAGES)
 PYTHON_BUILD := $(abspath $(BUILD))/python
 PYTHON_LIB := $(PYTHON_BUILD)/lib
 PYTHON_SOURCES := $(wildcard host/python/*.py host/python/*.toml host/python/*.map $(addprefix host/python/beamslider/*.,py c h))
-PYTHON_ARCHIVES := $(foreach real,double float,$(LIB_DIR)/libbeamslider-$(real).a $(LIB_DIR)/libbeamslider-host-$(real).a)
+PYTHON_ARCHIVES = $(foreach real,double float,$(call python_archives,$(real)))
 # what the tests need of the environment: no bytecode or cache written beside
 # the sources, the repository and the programs to compare with, no display
 PYTHON_TEST_ENV := PYTHONPATH=$(PYTHON_LIB) PYTHONDONTWRITEBYTECODE=1 MPLBACKEND=Agg BEAMSLIDER_ROOT=$(CURDIR) \
@@ -29,10 +29,15 @@ PYTHON_TEST_ENV := PYTHONPATH=$(PYTHON_LIB) PYTHONDONTWRITEBYTECODE=1 MPLBACKEND
                    BEAMSLIDER_CLI_FLOAT=$(abspath $(BUILD))/float/beamslider
 
 .PHONY: python test-python test-python-long deps-python
-# The libraries (and, for the tests, the programs) of each precision, one
-# sub-make a precision (each costs some 0.5 CPU-s), then the package.
+# The static libraries the package links (and, for the tests, the programs)
+# of each precision, one sub-make a precision (each costs some 0.5 CPU-s),
+# then the package. Not the shared library: the package does not load it, and
+# its link optimises the core again (-flto, some 15 CPU-s a precision);
+# tests/check_consumer.sh tests it (make test-long).
+python_archives = $(LIB_DIR)/libbeamslider-$1.a $(LIB_DIR)/libbeamslider-host-$1.a
 python: deps-python
-	@set -e; for real in $(LIB_REALS); do $(MAKE) --no-print-directory REAL=$$real lib-one; done
+	@set -e; for real in $(LIB_REALS); do \
+	    $(MAKE) --no-print-directory REAL=$$real $(call python_archives,$$real); done
 	@$(MAKE) --no-print-directory $(PYTHON_BUILD)/built
 
 # setuptools does not see the archives change: the stamp does, and --force
@@ -45,7 +50,7 @@ $(PYTHON_BUILD)/built: $(PYTHON_SOURCES) $(PYTHON_ARCHIVES)
 
 test-python: deps-python
 	@set -e; for real in $(LIB_REALS); do \
-	    $(MAKE) --no-print-directory REAL=$$real lib-one $(BUILD)/$$real/beamslider; done
+	    $(MAKE) --no-print-directory REAL=$$real $(call python_archives,$$real) $(BUILD)/$$real/beamslider; done
 	@$(MAKE) --no-print-directory $(PYTHON_BUILD)/built
 	cd $(PYTHON_BUILD) && $(PYTHON_TEST_ENV) $(PYTHON) -m pytest -q -p no:cacheprovider -m "not slow" \
 	    $(CURDIR)/host/python/tests

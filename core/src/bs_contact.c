@@ -23,7 +23,9 @@
  *           W_T,k = -t_z phi_k + (-t_x a1 - t_z a2 - g_N) phi_k'
  * Each row's beam part is a combination of two vectors, phi and phi' at the
  * corner: the set keeps those and the two coefficients per row, never the
- * rows, and forms every product with them in one pass over the modes:
+ * rows, and forms every product with them in passes over the modes (a lone
+ * corner's in one, two corners' in three: each corner's own, then the cross
+ * products; corner_pass, cross_products):
  *   W_r^T u         = c_r0 (phi . u) + c_r1 (phi' . u)
  *   W_r^T M^-1 W_s  = c_r0 c_s0 (phi_a . phi_b) + c_r0 c_s1 (phi_a . phi'_b)
  *                   + c_r1 c_s0 (phi'_a . phi_b) + c_r1 c_s1 (phi'_a . phi'_b) + slider part
