@@ -2,7 +2,7 @@
 # check_embedded_build_systems.sh OUT [HOST_RUN] - the Zephyr module
 # (port/zephyr) and the PlatformIO library (port/platformio) checked without
 # Zephyr, west or PlatformIO, which Debian does not have (`make
-# embedded-build-systems-test`, part of `make test`; tests/buildsys/):
+# embedded-build-systems-test`, part of `make test-long`; tests/buildsys/):
 #
 #   Zephyr      module.yml and every path it names, the Kconfig under
 #               kconfiglib (defaults, the precision choice, the sample's

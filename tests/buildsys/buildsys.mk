@@ -3,7 +3,7 @@
 # example) checked without Zephyr or PlatformIO. Included by the Makefile
 # (after tests/embedded/embedded.mk, whose host twin it uses).
 #
-#   make embedded-build-systems-test   (part of `make test`)
+#   make embedded-build-systems-test   (part of `make test-long`)
 #       tests/check_embedded_build_systems.sh: module.yml, Kconfig
 #       (kconfiglib), library.json and the example's platformio.ini read and
 #       checked; the module's CMake logic through a stand-in of the Zephyr
@@ -21,4 +21,6 @@ BUILDSYS_HOST_RUN := $(if $(CM_TOOLS_OK),$(EMB_HOST)/fig6.float.20000)
 embedded-build-systems-test: deps-test $(BUILDSYS_HOST_RUN)
 	@sh tests/check_embedded_build_systems.sh $(BUILD)/buildsys $(BUILDSYS_HOST_RUN)
 
-TEST_EXTRA += embedded-build-systems-test
+# In make test-long: its two cross builds and QEMU runs cost some 20 CPU-s,
+# a twentieth of a fresh clone's make test, for files that change seldom.
+TEST_LONG += embedded-build-systems-test
