@@ -104,7 +104,7 @@ typedef struct bs_sim {
     bs_real excitation[2];             /* frequency [Hz] and amplitude a [m/s^2] as set */
     bs_real step_accel;                /* a sinc(Omega dt / 2): amplitude of the step mean [m/s^2] */
     bs_real base_accel;                /* mean base acceleration the last step used [m/s^2] */
-    /* q_beam to slider_velocity: one block, which the step reads at once (bs_step.c) */
+    /* q_beam to x_c_low: one block, which the step reads and writes at once (bs_step.c) */
     bs_real q_beam[BS_MAX_MODES];      /* modal coordinates q_k */
     bs_real u_beam[BS_MAX_MODES];      /* modal velocities */
     bs_real slider[3];                 /* x_C, z_C [m], beta [rad] */

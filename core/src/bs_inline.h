@@ -105,6 +105,22 @@ BS_INLINE void bs_load_16(const bs_real *p, bs_real *v)
     v[15] = v15;
 }
 
+/* p[i] = v[i], i < 17: one vstm from s0-s16 (18 cycles, 34 with a vstr
+ * each), the "=m" operand ordering it before later reads of p[0..16]. */
+BS_INLINE void bs_store_17(bs_real *p, const bs_real *v)
+{
+    register bs_real v0 __asm__("s0") = v[0], v1 __asm__("s1") = v[1], v2 __asm__("s2") = v[2];
+    register bs_real v3 __asm__("s3") = v[3], v4 __asm__("s4") = v[4], v5 __asm__("s5") = v[5];
+    register bs_real v6 __asm__("s6") = v[6], v7 __asm__("s7") = v[7], v8 __asm__("s8") = v[8];
+    register bs_real v9 __asm__("s9") = v[9], v10 __asm__("s10") = v[10], v11 __asm__("s11") = v[11];
+    register bs_real v12 __asm__("s12") = v[12], v13 __asm__("s13") = v[13], v14 __asm__("s14") = v[14];
+    register bs_real v15 __asm__("s15") = v[15], v16 __asm__("s16") = v[16];
+    __asm__("vstmia %1, {%2-%18}"
+            : "=m"(*(bs_real(*)[17])p)
+            : "r"(p), "t"(v0), "t"(v1), "t"(v2), "t"(v3), "t"(v4), "t"(v5), "t"(v6), "t"(v7), "t"(v8), "t"(v9),
+              "t"(v10), "t"(v11), "t"(v12), "t"(v13), "t"(v14), "t"(v15), "t"(v16));
+}
+
 /* bs_load_4 of *p, then *p += 4: consecutive groups of four, the address
  * advanced by the load itself (vldmia with write-back), no arithmetic. */
 BS_INLINE void bs_load_4_next(const bs_real **p, bs_real *v)
@@ -133,6 +149,13 @@ BS_INLINE void bs_load_16(const bs_real *p, bs_real *v)
     int i;
     for (i = 0; i < 16; ++i)
         v[i] = p[i];
+}
+
+BS_INLINE void bs_store_17(bs_real *p, const bs_real *v)
+{
+    int i;
+    for (i = 0; i < 17; ++i)
+        p[i] = v[i];
 }
 
 BS_INLINE void bs_load_4_next(const bs_real **p, bs_real *v)

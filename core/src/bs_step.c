@@ -82,21 +82,23 @@ static void add_compensated(bs_real *sum, bs_real *low, bs_real increment)
     *sum = s;
 }
 
-/* The state the step starts from, q_B, u_B and the slider's pose and
- * velocity (n modes), which lie one after the other in the sim
- * (bs_sim_layout.h): with five modes 16 words, on a Cortex-M4F with float
- * read with one vldm (bs_load_16; mid-fig6-float 2437.0 -> 2424.0 cycles a
- * step), else member by member. */
-#define START_IN_ONE_LOAD (BS_LOAD_4_VLDM && 2 * BS_MAX_MODES + 6 == 16)
-#if START_IN_ONE_LOAD
+/* The state a step starts from and the one it commits, q, u, the slider's
+ * pose and velocity (n modes) and x_C's low part, lie one after the other in
+ * the sim (bs_sim_layout.h): with five modes 17 words. On a Cortex-M4F with
+ * float the step reads the first 16 with one vldm (bs_load_16) and writes all
+ * 17 with one vstm (bs_store_17): 18 cycles each way, 32 and 34 with a vldr
+ * or vstr a word (mid-fig6-float 2437.0 -> 2424.0 cycles a step, 2414.6 with
+ * the store). Elsewhere member by member. */
+#define STATE_AS_BLOCK (BS_LOAD_4_VLDM && 2 * BS_MAX_MODES + 6 == 16)
+#if STATE_AS_BLOCK
 /* a build where they are not one block fails here */
-typedef char start_is_one_block[offsetof(bs_sim, x_c_low) - offsetof(bs_sim, q_beam) == 16 * sizeof(bs_real) ? 1 : -1];
+typedef char state_is_one_block[offsetof(bs_sim, x_c_low) - offsetof(bs_sim, q_beam) == 16 * sizeof(bs_real) ? 1 : -1];
 #endif
 
 BS_INLINE void read_start(const bs_sim *sim, const int n, bs_real *q, bs_real *u, bs_real *pose, bs_real *velocity)
 {
     int i;
-#if START_IN_ONE_LOAD
+#if STATE_AS_BLOCK
     bs_real block[16];
     bs_load_16(sim->q_beam, block);
     for (i = 0; i < n; ++i) {
@@ -227,7 +229,7 @@ static bs_status find_contacts(bs_sim *sim, step_state *s)
 /* 3b: the contact problem, warm-started from the last step's percussions
  * (which the detection put in the set); adds M^-1 W P to the free
  * velocities. */
-static void solve_contacts(bs_sim *sim, step_state *s, bs_step_report *report)
+BS_INLINE void solve_contacts(bs_sim *sim, step_state *s, bs_step_report *report)
 {
     bs_contact_set *set = &sim->contacts;
 
@@ -279,15 +281,28 @@ BS_INLINE bs_status end_of_step(const bs_sim *sim, step_state *s, const int n)
     return BS_OK;
 }
 
-/* The step's result becomes the sim's state. The warm starts: the slots of
- * the contacts of the last step that are not active now are cleared, the
- * active ones written; the others are 0 already. */
-BS_INLINE void commit(bs_sim *sim, const step_state *s, const bs_step_report *report, const int n)
+/* q_E, u_E, the slider's pose and velocity at the end and x_C's low part
+ * into the sim (STATE_AS_BLOCK). */
+BS_INLINE void write_end(bs_sim *sim, const step_state *s, const int n)
 {
-    const bs_contact_set *set = &sim->contacts;
-    unsigned active = 0, gone;
-    int a, i, r;
-
+    int i;
+#if STATE_AS_BLOCK
+    if (n == BS_MAX_MODES) { /* the block is written whole: no mode slot beyond n */
+        bs_real block[17];
+        for (i = 0; i < n; ++i) {
+            block[i] = s->q[i];
+            block[BS_MAX_MODES + i] = s->u_beam[i];
+        }
+        block[2 * BS_MAX_MODES] = s->x_end;
+        block[2 * BS_MAX_MODES + 1] = s->slider[1];
+        block[2 * BS_MAX_MODES + 2] = s->slider[2];
+        for (i = 0; i < 3; ++i)
+            block[2 * BS_MAX_MODES + 3 + i] = s->u_slider[i];
+        block[2 * BS_MAX_MODES + 6] = s->x_end_low;
+        bs_store_17(sim->q_beam, block);
+        return;
+    }
+#endif
     for (i = 0; i < n; ++i) {
         sim->q_beam[i] = s->q[i];
         sim->u_beam[i] = s->u_beam[i];
@@ -298,6 +313,18 @@ BS_INLINE void commit(bs_sim *sim, const step_state *s, const bs_step_report *re
     sim->slider[2] = s->slider[2];
     for (i = 0; i < 3; ++i)
         sim->slider_velocity[i] = s->u_slider[i];
+}
+
+/* The step's result becomes the sim's state. The warm starts: the slots of
+ * the contacts of the last step that are not active now are cleared, the
+ * active ones written; the others are 0 already. */
+BS_INLINE void commit(bs_sim *sim, const step_state *s, const bs_step_report *report, const int n)
+{
+    const bs_contact_set *set = &sim->contacts;
+    unsigned active = 0, gone;
+    int a, i, r;
+
+    write_end(sim, s, n);
     for (a = 0; a < set->count; ++a) {
         const int id = set->id[a];
         active |= 1u << id;
