@@ -17,6 +17,11 @@
 #endif
 
 #if BS_WITH_STRETCHING
+/* S'_ij from the upper triangle: S is symmetric bit for bit (bs_scene_check),
+ * so S' too; read there, each entry is loaded once for the two rows that use
+ * it. */
+#define UPPER_STRETCH(k, i, j) ((i) <= (j) ? (k)->stretch[i][j] : (k)->stretch[j][i])
+
 /* sq = S' q and returns E' = q^T S' q (S' = sqrt(dt) S, bs_step_constants):
  * dt N(q) = E' sq. Inlined: the step's loops are unrolled for a compiled
  * scene, and its zeros dropped. */
@@ -29,7 +34,7 @@ BS_INLINE bs_real bs_beam_stretch(const bs_step_constants *k, int n, const bs_re
         for (i = 0; i < n; ++i) {
             bs_real acc = BS_ZERO;
             for (j = i & 1; j < n; j += 2)
-                acc += k->stretch[i][j] * q[j];
+                acc += UPPER_STRETCH(k, i, j) * q[j];
             sq[i] = acc;
             energy += q[i] * acc;
         }
@@ -40,7 +45,7 @@ BS_INLINE bs_real bs_beam_stretch(const bs_step_constants *k, int n, const bs_re
         bs_real acc = BS_ZERO;
         for (j = 0; j < n; ++j)
             if (BS_STRETCH_USED(i, j))
-                acc += k->stretch[i][j] * q[j];
+                acc += UPPER_STRETCH(k, i, j) * q[j];
         sq[i] = acc;
         energy += q[i] * acc;
     }
