@@ -121,8 +121,9 @@ BS_INLINE void read_start(const bs_sim *sim, const int n, bs_real *q, bs_real *u
 #endif
 }
 
-/* 1 and 2: midpoint configuration, smooth forces there and the beam's free
- * velocities (the slider's: slider_free_velocity); BS_E_UNSTABLE if the
+/* 1 and 2: midpoint configuration, smooth forces there and the free
+ * velocities (the slider's from its velocity as read_start has it in
+ * registers, not read again after the detection); BS_E_UNSTABLE if the
  * explicit stiffness exceeds its limit. */
 BS_INLINE bs_status smooth_part(const bs_sim *sim, step_state *s, const int n)
 {
@@ -139,8 +140,15 @@ BS_INLINE bs_status smooth_part(const bs_sim *sim, step_state *s, const int n)
     read_start(sim, n, q_start, u_start, pose, velocity);
     for (i = 0; i < n; ++i)
         s->q[i] = q_start[i] + half * u_start[i];
-    for (i = 0; i < 3; ++i)
+    for (i = 0; i < 3; ++i) {
         s->slider[i] = pose[i] + half * velocity[i];
+        s->u_slider[i] = velocity[i];
+    }
+#if BS_WITH_GRAVITY
+    s->u_slider[0] += k->dt_gravity[0];
+    s->u_slider[1] += k->dt_gravity[1];
+#endif
+    s->u_slider[1] -= k->dt * a; /* the base frame's inertial force */
 #if BS_WITH_STRETCHING
     energy = bs_beam_stretch(k, n, s->q, sq);
 #else
@@ -170,7 +178,7 @@ BS_INLINE bs_status smooth_part(const bs_sim *sim, step_state *s, const int n)
             const bs_real q_stiff = q_start[i] + scene->theta * k->dt * u_start[i];
             s->u_beam[i] = u_start[i] + scene->mode_gain[i] * (-k->dt_gamma[i] * a - k->dt_omega_sq[i] * q_stiff
                                                                 - k->dt_damping[i] * u_start[i]
-                                                                    - energy * sq[i] - piezo * scene->piezo_theta[i]);
+                                                                - energy * sq[i] - piezo * scene->piezo_theta[i]);
         }
     } else
 #endif
@@ -191,22 +199,6 @@ BS_INLINE bs_status smooth_part(const bs_sim *sim, step_state *s, const int n)
     (void)piezo;
     (void)extra;
     return BS_OK;
-}
-
-/* 2 for the slider, after the detection, which does not need it: formed
- * before, its inputs waited through the detection in stack slots. */
-BS_INLINE void slider_free_velocity(const bs_sim *sim, step_state *s)
-{
-    const bs_step_constants *k = &sim->k;
-    int i;
-
-    for (i = 0; i < 3; ++i)
-        s->u_slider[i] = sim->slider_velocity[i];
-#if BS_WITH_GRAVITY
-    s->u_slider[0] += k->dt_gravity[0];
-    s->u_slider[1] += k->dt_gravity[1];
-#endif
-    s->u_slider[1] -= k->dt * s->base_accel; /* the base frame's inertial force */
 }
 
 /* 3a: the contacts active at the midpoint, into sim->contacts;
@@ -381,7 +373,6 @@ BS_INLINE bs_status step_modes(bs_sim *sim, bs_real base_accel, const int n)
     status = find_contacts(sim, &s);
     if (status != BS_OK)
         return status;
-    slider_free_velocity(sim, &s);
     /* the report too is committed only with the step: a failed step leaves
      * the sim as it was. The solve fills in all of it. */
     if (sim->contacts.count > 0) {
