@@ -559,13 +559,8 @@ BS_INLINE void problem(int n, const bs_step_constants *k, bs_contact_set *set, c
     }
 }
 
-/* Inlined into the step under -flto, as bs_contact_detect is: left to GCC,
- * whether it is depends on the step's size, and a few instructions more in
- * the step made it a call (mid-fig6-float 2414.6 -> 2532.9 cycles a step).
- * Elsewhere an ordinary function. */
-#if defined(__GNUC__)
-__attribute__((always_inline)) inline
-#endif
+/* Inlined into a compiled scene's step (BS_STEP_STAGE). */
+BS_STEP_STAGE
 void bs_contact_problem(const bs_scene *scene, const bs_step_constants *k, bs_contact_set *set,
                         const bs_real *u_beam, const bs_real *u_slider, const bs_real *u_beam_before,
                         const bs_real *u_slider_before)
@@ -634,10 +629,8 @@ BS_INLINE void apply(int n, const bs_step_constants *k, const bs_contact_set *se
 #endif
 }
 
-/* Inlined into the step as bs_contact_problem is. */
-#if defined(__GNUC__)
-__attribute__((always_inline)) inline
-#endif
+/* Inlined into a compiled scene's step (BS_STEP_STAGE). */
+BS_STEP_STAGE
 void bs_contact_apply(const bs_scene *scene, const bs_step_constants *k, const bs_contact_set *set,
                       bs_real *u_beam, bs_real *u_slider)
 {

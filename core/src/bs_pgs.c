@@ -1008,13 +1008,9 @@ static void solve_one(bs_contact_set *set, const bs_solver_options *options, bs_
     }
 }
 
-/* Inlined into the step under -flto (as bs_contact_detect and
- * bs_contact_problem are; the pair solve stays a call): left to GCC, a few
- * instructions more in the step made it a call (mid-fig6-float 2414.6 ->
- * 2484.8 cycles a step). Elsewhere an ordinary function. */
-#if defined(__GNUC__)
-__attribute__((always_inline)) inline
-#endif
+/* Inlined into a compiled scene's step (BS_STEP_STAGE, bs_inline.h); the
+ * pair solve stays a call. */
+BS_STEP_STAGE
 void bs_pgs_solve(bs_contact_set *set, const bs_solver_options *options, bs_step_report *report)
 {
     bs_real step[BS_MAX_CONTACTS];
