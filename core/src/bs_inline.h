@@ -149,6 +149,17 @@ BS_INLINE void bs_load_4_next(const bs_real **p, bs_real *v)
     v[2] = v2;
     v[3] = v3;
 }
+
+/* p[i] = v[i], i < 4: bs_load_4's store, one vstm from s0-s3 (1 + N cycles
+ * for the 2N of vstr). */
+BS_INLINE void bs_store_4(bs_real *p, const bs_real *v)
+{
+    register bs_real v0 __asm__("s0") = v[0], v1 __asm__("s1") = v[1], v2 __asm__("s2") = v[2],
+                                      v3 __asm__("s3") = v[3];
+    __asm__("vstmia %1, {%2, %3, %4, %5}"
+            : "=m"(*(bs_real(*)[4])p)
+            : "r"(p), "t"(v0), "t"(v1), "t"(v2), "t"(v3));
+}
 #else
 #define BS_LOAD_4_VLDM 0
 BS_INLINE void bs_load_4(const bs_real *p, bs_real *v)
@@ -177,6 +188,14 @@ BS_INLINE void bs_load_4_next(const bs_real **p, bs_real *v)
 {
     bs_load_4(*p, v);
     *p += 4;
+}
+
+BS_INLINE void bs_store_4(bs_real *p, const bs_real *v)
+{
+    p[0] = v[0];
+    p[1] = v[1];
+    p[2] = v[2];
+    p[3] = v[3];
 }
 #endif
 

@@ -111,6 +111,7 @@
 #include "bs_port.h"
 #include "bs_shape.h"
 #include "bs_sim_internal.h"
+#include <stddef.h>
 
 #define OBSERVER_READY 0x6f6f6f6fu /* "oooo": a Thumb-2 immediate, like BS_SIM_READY */
 #define TWO_PI BS_R(6.283185307179586)
@@ -131,6 +132,16 @@
  * samples, 3 L/s at dt = 2e-5 s; the slider drifts at hundredths of L a
  * second) is a state set from outside the observer, not drift. */
 #define DRIFT_JUMP BS_R(0.001)
+
+/* bs_lowpass2_pair_step moves a signal's two products as one block: with_b
+ * right after with_a. */
+typedef char products_in_pairs[offsetof(bs_observer, meas_b) == offsetof(bs_observer, meas_a) + sizeof(bs_lowpass2)
+                                       && offsetof(bs_observer, twin_b)
+                                              == offsetof(bs_observer, twin_a) + sizeof(bs_lowpass2)
+                                       && offsetof(bs_observer, defl_b)
+                                              == offsetof(bs_observer, defl_a) + sizeof(bs_lowpass2)
+                                   ? 1
+                                   : -1];
 
 typedef struct complex_real {
     bs_real re, im;
@@ -547,16 +558,11 @@ static void demodulate(bs_observer *obs, bs_real a, bs_real y, bs_real y_twin, b
     const bs_real alpha = obs->reference.alpha;
     const bs_real b = bs_lockin_reference_step(&obs->reference, a);
 
-    if (measured) {
-        bs_lowpass2_step(&obs->meas_a, y * a, alpha);
-        bs_lowpass2_step(&obs->meas_b, y * b, alpha);
-    }
-    if (obs->signal != BS_SIGNAL_DEFLECTION) { /* else y^ is w^: its products are defl_a, defl_b */
-        bs_lowpass2_step(&obs->twin_a, y_twin * a, alpha);
-        bs_lowpass2_step(&obs->twin_b, y_twin * b, alpha);
-    }
-    bs_lowpass2_step(&obs->defl_a, w_twin * a, alpha);
-    bs_lowpass2_step(&obs->defl_b, w_twin * b, alpha);
+    if (measured)
+        bs_lowpass2_pair_step(&obs->meas_a, &obs->meas_b, y * a, y * b, alpha);
+    if (obs->signal != BS_SIGNAL_DEFLECTION) /* else y^ is w^: its products are defl_a, defl_b */
+        bs_lowpass2_pair_step(&obs->twin_a, &obs->twin_b, y_twin * a, y_twin * b, alpha);
+    bs_lowpass2_pair_step(&obs->defl_a, &obs->defl_b, w_twin * a, w_twin * b, alpha);
     bs_lowpass2_step(&obs->power, power, alpha);
 }
 
@@ -784,6 +790,19 @@ static bs_status usable(const bs_observer *obs, const bs_sim *sim)
     return sim == obs->sim ? BS_OK : BS_E_ARGUMENT;
 }
 
+/* obs, as an address the compiler no longer takes for a link-time
+ * constant: with the observer a static (a firmware's), GCC would read the
+ * address of each block the lock-in moves with one vldm or vstm from a
+ * literal in flash (a load with wait states) instead of adding its offset
+ * to the register that holds obs. Nothing else changes. */
+static bs_observer *in_register(bs_observer *obs)
+{
+#if defined(__GNUC__)
+    __asm__("" : "+r"(obs));
+#endif
+    return obs;
+}
+
 /* One step, with a measurement (measured 1) or without one: the sample of
  * y_k was lost, and the step does all but what needs it (the output
  * injection and the lock-in's products with y). */
@@ -832,7 +851,7 @@ static bs_status observe(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_r
     obs->estimate.innovation = e;
     if (!measured)
         measurement = obs->past_signal[aligned]; /* as if it had been predicted exactly */
-    demodulate(obs, obs->past_accel[aligned], measurement, obs->past_signal[aligned],
+    demodulate(in_register(obs), obs->past_accel[aligned], measurement, obs->past_signal[aligned],
                obs->past_deflection[aligned], twin_power(sim), measured);
     if (obs->steps % POSITION_EVERY == 0) {
         const bs_real dt = sim->scene->dt;
