@@ -431,6 +431,12 @@ static bs_real gains_at(bs_observer *obs, bs_real s, int n)
     return (s - obs->gain_s_from) / obs->gain_s_width;
 }
 
+/* The expansion of phi_k = 0, every mode's: the beam inside a clamp, which
+ * moves with the base (bs_shape_expanded). Its Horner sums give +0 for any
+ * finite t, as bs_shape_expanded's 0: the correction's loop over the modes
+ * has no branch, and phi_k, phi'_k stay in registers. */
+static const bs_real in_clamp[BS_MAX_MODES][BS_SHAPE_TERMS] = { { BS_R(0.0) } };
+
 /* The sim's state as the correction changes it (3). */
 typedef struct corrected_state {
     bs_real q[BS_MAX_MODES], u[BS_MAX_MODES];
@@ -462,7 +468,7 @@ static void correction_of(bs_observer *obs, const bs_sim *sim, bs_real e, correc
     const bs_scene *scene = sim->scene;
     const int n = BS_NMODES(scene);
     const bs_real *from = obs->gain_from, *change = obs->gain_change;
-    bs_real phi[BS_MAX_MODES], slope[BS_MAX_MODES];
+    const bs_real *row; /* mode k's expansion, then k + 1's */
     bs_real dw = BS_ZERO, dw_slope = BS_ZERO, dv = BS_ZERO, dv_slope = BS_ZERO;
     const bs_real x = sim->slider[0] + sim->x_c_low;
     const bs_real within = gains_at(obs, x / sim->k.length, n);
@@ -478,15 +484,19 @@ static void correction_of(bs_observer *obs, const bs_sim *sim, bs_real e, correc
         bs_shape_expand(scene, x, &obs->shape);
         t = sim->k.slope_scale * (x - obs->shape.centre);
     }
-    bs_shape_expanded(n, &obs->shape, t, x >= BS_R(0.0) && x <= sim->k.length, sim->k.slope_scale, phi, slope);
-    for (k = 0; k < n; ++k) {
+    row = x >= BS_R(0.0) && x <= sim->k.length ? obs->shape.coef[0] : in_clamp[0];
+    for (k = 0; k < n; ++k) { /* bs_shape_expanded mode by mode */
         const bs_real dq = (from[k] + within * change[k]) * e, du = (from[n + k] + within * change[n + k]) * e;
+        bs_real b[BS_SHAPE_TERMS], phi, slope;
+        bs_shape_terms(&row, b);
+        bs_shape_taylor(b, t, &phi, &slope);
+        slope *= sim->k.slope_scale;
         c->q[k] = sim->q_beam[k] + dq;
         c->u[k] = sim->u_beam[k] + du;
-        dw += phi[k] * dq;
-        dw_slope += slope[k] * dq;
-        dv += phi[k] * du;
-        dv_slope += slope[k] * du;
+        dw += phi * dq;
+        dw_slope += slope * dq;
+        dv += phi * du;
+        dv_slope += slope * du;
     }
     for (k = 0; k < 3; ++k) {
         c->slider[k] = sim->slider[k];
@@ -792,9 +802,9 @@ static bs_status usable(const bs_observer *obs, const bs_sim *sim)
 
 /* obs, as an address the compiler no longer takes for a link-time
  * constant: with the observer a static (a firmware's), GCC would read the
- * address of each block the lock-in moves with one vldm or vstm from a
- * literal in flash (a load with wait states) instead of adding its offset
- * to the register that holds obs. Nothing else changes. */
+ * address of each block the lock-in and the correction move with one vldm
+ * or vstm from a literal in flash (a load with wait states) instead of
+ * adding its offset to the register that holds obs. Nothing else changes. */
 static bs_observer *in_register(bs_observer *obs)
 {
 #if defined(__GNUC__)
@@ -837,7 +847,7 @@ static bs_status observe(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_r
         corrected_state corrected;
         int outlier = beyond_gate(obs, e);
         if (!outlier && obs->options.correct_beam) {
-            correction_of(obs, sim, e, &corrected);
+            correction_of(in_register(obs), sim, e, &corrected);
             outlier = !commit_correction(sim, &corrected);
         }
         if (outlier) {
