@@ -487,9 +487,11 @@ static void correction_of(bs_observer *obs, const bs_sim *sim, bs_real e, correc
     row = x >= BS_R(0.0) && x <= sim->k.length ? obs->shape.coef[0] : in_clamp[0];
     for (k = 0; k < n; ++k) { /* bs_shape_expanded mode by mode */
         const bs_real dq = (from[k] + within * change[k]) * e, du = (from[n + k] + within * change[n + k]) * e;
-        bs_real b[BS_SHAPE_TERMS], phi, slope;
-        bs_shape_terms(&row, b);
-        bs_shape_taylor(b, t, &phi, &slope);
+        bs_real phi, slope;
+        /* read in place, not with bs_shape_terms: GCC keeps every store
+         * before an asm that reads memory, and c's would stay, dead */
+        bs_shape_taylor(row, t, &phi, &slope);
+        row += BS_SHAPE_TERMS;
         slope *= sim->k.slope_scale;
         c->q[k] = sim->q_beam[k] + dq;
         c->u[k] = sim->u_beam[k] + du;
