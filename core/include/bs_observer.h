@@ -190,7 +190,8 @@ typedef struct bs_observer {
     uint64_t last_outlier;                            /* step of the last outlier (0: none) */
     int gain_interval;                                /* the gain schedule's interval of the last step
                                                          (-1: none yet) */
-    bs_real gain_s_from, gain_s_to, gain_s_width;     /* its start, end and width in s */
+    bs_real gain_s_from, gain_s_to, gain_s_width;     /* its start, end and width in s (its start
+                                                         as the end of an end interval: gains_at) */
     bs_real gain_from[2 * BS_MAX_MODES + 1];          /* L_q, L_u, L_v at its start, */
     bs_real gain_change[2 * BS_MAX_MODES + 1];        /* and their change over it */
     bs_shape_cache shape;                             /* the mode shapes expanded about the slider */

@@ -363,6 +363,7 @@ bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer
     obs->innovation_sq = BS_R(0.0);
     obs->last_outlier = 0;
     obs->gain_interval = -1;
+    obs->gain_s_from = obs->gain_s_to = BS_R(0.0); /* kept by no s (gains_at) */
     bs_shape_forget(&obs->shape);
     obs->estimate.s = bs_sim_position(sim);
     obs->estimate.s_sigma = SIGMA_UNKNOWN;
@@ -398,7 +399,9 @@ static void enter_interval(bs_observer *obs, int i, int n)
     obs->gain_from[2 * n] = g->gain_v[i];
     obs->gain_change[2 * n] = g->gain_v[i + 1] - g->gain_v[i];
     obs->gain_s_from = g->gain_s[i];
-    obs->gain_s_to = g->gain_s[i + 1];
+    /* an end interval is kept by no s: s clamped at the schedule's ends
+     * (gains_at) makes the walk's interval another than the one s is in */
+    obs->gain_s_to = i > 0 && i < obs->gain_last - 1 ? g->gain_s[i + 1] : g->gain_s[i];
     obs->gain_s_width = g->gain_s[i + 1] - g->gain_s[i];
     obs->gain_interval = i;
 }
@@ -413,9 +416,10 @@ static bs_real gains_at(bs_observer *obs, bs_real s, int n)
 {
     const bs_observer_gains *g = obs->gains;
     const int last = obs->gain_last;
-    int i = obs->gain_interval;
-    if (i > 0 && i < last - 1 && s > obs->gain_s_from && s <= obs->gain_s_to)
+    int i;
+    if (s > obs->gain_s_from && s <= obs->gain_s_to)
         return (s - obs->gain_s_from) / obs->gain_s_width; /* still inside an inner interval: what the walk finds */
+    i = obs->gain_interval;
     if (i < 0)
         i = 0;
     if (s < g->gain_s[0])
