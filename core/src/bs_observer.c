@@ -849,7 +849,7 @@ static bs_status observe(bs_observer *obs, bs_sim *sim, bs_real base_accel, bs_r
         aligned += BS_OBSERVER_MAX_LATENCY + 1;
 
     e = measured ? measurement - obs->past_signal[aligned] : BS_R(0.0);
-    if (measured) { /* an outlier is skipped (7): the step goes on without it */
+    if (BS_LIKELY(measured)) { /* a lost sample is rare; an outlier is skipped (7): the step goes on without it */
         corrected_state corrected;
         int outlier = beyond_gate(obs, e);
         if (!outlier && obs->options.correct_beam) {
