@@ -32,7 +32,7 @@ PYTHON_TEST_ENV := PYTHONPATH=$(PYTHON_LIB) PYTHONDONTWRITEBYTECODE=1 MPLBACKEND
 # The static libraries the package links (and, for the tests, the programs)
 # of each precision, one sub-make a precision (each costs some 0.5 CPU-s),
 # then the package. Not the shared library: the package does not load it, and
-# its link optimises the core again (-flto, some 15 CPU-s a precision);
+# its link optimises the core again (-flto, some 20 CPU-s a precision);
 # tests/check_consumer.sh tests it (make test-long).
 python_archives = $(LIB_DIR)/libbeamslider-$1.a $(LIB_DIR)/libbeamslider-host-$1.a
 python: deps-python
