@@ -121,6 +121,9 @@ typedef struct bs_observer_options {
     bs_real friction_deadband; /* persistent s errors up to this leave mu alone [1], >= 0 */
     bs_real friction_sigma;  /* mu is learnt only while s_sigma is below this (the high branch,
                                 where s is measured) [1], > 0 */
+    bs_real friction_amplitude; /* ... and the twin's w(4L/7) amplitude above this many beam
+                                   thicknesses h (the high branch; the low branch stays below
+                                   h/4) [1], >= 0 */
 } bs_observer_options;
 
 /* Defaults (tuned on fig6, docs/twin.md): both corrections, lock-in 0.1 s,
@@ -136,9 +139,10 @@ typedef struct bs_observer_options {
 #define BS_OBSERVER_DEFAULT_SETTLE_TIME 0.5
 #define BS_OBSERVER_DEFAULT_OUTLIER_GATE 6.0
 #define BS_OBSERVER_DEFAULT_FRICTION_GAIN 0.0
-#define BS_OBSERVER_DEFAULT_FRICTION_TIME 1.0
+#define BS_OBSERVER_DEFAULT_FRICTION_TIME 0.5
 #define BS_OBSERVER_DEFAULT_FRICTION_DEADBAND 0.001
 #define BS_OBSERVER_DEFAULT_FRICTION_SIGMA 0.002
+#define BS_OBSERVER_DEFAULT_FRICTION_AMPLITUDE 0.5
 /* The friction estimate stays within [1 - range, 1 + range] times the
  * scene's mu (twice the +-25 % a plant is drawn with in the twin report). */
 #define BS_OBSERVER_FRICTION_RANGE 0.5

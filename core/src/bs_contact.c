@@ -345,9 +345,7 @@ BS_INLINE bs_status detect(int n, const bs_scene *scene, const bs_step_constants
  * 2767.6 -> 2742.3 cycles a step, 280 bytes more stack; GCC then leaves the
  * pair solve a call).
  * Elsewhere an ordinary function. */
-#if defined(__GNUC__)
-__attribute__((always_inline)) inline
-#endif
+BS_STEP_STAGE_ALWAYS
 bs_status bs_contact_detect(const bs_scene *scene, const bs_step_constants *k, const bs_contact_frame *frame,
                             bs_contact_set *set)
 {

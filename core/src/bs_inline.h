@@ -31,6 +31,14 @@
 #define BS_STEP_STAGE
 #endif
 
+/* BS_STEP_STAGE_ALWAYS: such a stage inlined with a run-time scene too
+ * (the contact detection: bs_contact.c says why). */
+#if defined(__GNUC__)
+#define BS_STEP_STAGE_ALWAYS __attribute__((always_inline)) inline
+#else
+#define BS_STEP_STAGE_ALWAYS
+#endif
+
 /* BS_ZERO: +0 for a sum to start at. A Cortex-M's FPU has no immediate 0,
  * and GCC reads a float 0 from a literal in flash; this one is an integer
  * 0 moved into the FPU (movs, vmov), the same bits. BS_ROUNDING(m): m eps

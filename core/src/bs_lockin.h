@@ -8,6 +8,7 @@
 
 #include "bs_inline.h"
 #include "bs_lockin_layout.h"
+#include <stddef.h>
 
 /* x into the two stages; alpha = dt / tau. */
 BS_INLINE void bs_lowpass2_step(bs_lowpass2 *f, bs_real x, bs_real alpha)
@@ -52,6 +53,13 @@ BS_INLINE bs_real bs_lowpass2_mean(const bs_lowpass2 *f)
  * (registers named: a vldm/vstm list is consecutive); the "m" operands order
  * them with the other accesses to *r. Elsewhere member copies. */
 #if BS_LOAD_4_VLDM
+/* a build where the twelve words are not one block, in this order, fails here */
+typedef char reference_is_one_block[sizeof(bs_lockin_reference) == 12 * sizeof(bs_real)
+                                            && offsetof(bs_lockin_reference, quadrature) == 3 * sizeof(bs_real)
+                                            && offsetof(bs_lockin_reference, ab) == 10 * sizeof(bs_real)
+                                        ? 1
+                                        : -1];
+
 BS_INLINE void bs_lockin_reference_load(const bs_lockin_reference *r, bs_lockin_reference *copy)
 {
     register bs_real w0 __asm__("s0"), w1 __asm__("s1"), w2 __asm__("s2"), w3 __asm__("s3");

@@ -88,11 +88,11 @@
  *    measured on fig6, a plant with 25 % more friction walks toward the
  *    centre more slowly and settles lower, and the s error reads about
  *    -0.0027 for as long as it lasts, 25 % less friction about +0.002, the
- *    nominal plant +0.0005. With friction_gain > 0, while s is measured
- *    (s_sigma below friction_sigma: the high branch; on the low branch |H|
- *    hardly depends on s and the s error carries no friction), the s error
- *    is low-passed over friction_time, and what of it is beyond
- *    friction_deadband moves mu:
+ *    nominal plant +0.0005. With friction_gain > 0, on the high branch
+ *    (the twin's w(4L/7) amplitude above friction_amplitude h, h/2 by
+ *    default; the low branch stays below h/4) while s is measured there
+ *    (s_sigma below friction_sigma), the s error is low-passed over
+ *    friction_time, and what of it is beyond friction_deadband moves mu:
  *      dmu/dt = -friction_gain mu_scene (persist -+ friction_deadband),
  *    within (1 +- BS_OBSERVER_FRICTION_RANGE) mu_scene, set on the sim by
  *    bs_sim_set_contact_laws. The deadband keeps the nominal plant's own
@@ -164,6 +164,7 @@ bs_observer_options bs_observer_defaults(void)
     o.friction_time = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_TIME;
     o.friction_deadband = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_DEADBAND;
     o.friction_sigma = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_SIGMA;
+    o.friction_amplitude = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_AMPLITUDE;
     return o;
 }
 
@@ -183,7 +184,8 @@ static int valid_options(const bs_observer_options *o)
            && o->settle_time >= BS_R(0.0) && finite(o->outlier_gate) && o->outlier_gate > BS_R(1.0)
            && finite(o->outlier_gate * o->outlier_gate) && finite(o->friction_gain) && o->friction_gain >= BS_R(0.0)
            && finite(o->friction_time) && o->friction_time > BS_R(0.0) && finite(o->friction_deadband)
-           && o->friction_deadband >= BS_R(0.0) && finite(o->friction_sigma) && o->friction_sigma > BS_R(0.0);
+           && o->friction_deadband >= BS_R(0.0) && finite(o->friction_sigma) && o->friction_sigma > BS_R(0.0)
+           && finite(o->friction_amplitude) && o->friction_amplitude >= BS_R(0.0);
 }
 
 /* The maps: s ascending within (0, 1/2], everything finite (|H| < 0: no
@@ -334,6 +336,7 @@ bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer
     obs->options.friction_time = options->friction_time;
     obs->options.friction_deadband = options->friction_deadband;
     obs->options.friction_sigma = options->friction_sigma;
+    obs->options.friction_amplitude = options->friction_amplitude;
     obs->friction_persist = BS_R(0.0);
     obs->friction_learnt = BS_R(0.0);
     obs->drift_s = bs_sim_position(sim);
@@ -779,8 +782,12 @@ static void estimate_friction(bs_observer *obs, bs_sim *sim, bs_real interval)
     const bs_real low = (BS_R(1.0) - (bs_real)BS_OBSERVER_FRICTION_RANGE) * mu_scene;
     const bs_real high = (BS_R(1.0) + (bs_real)BS_OBSERVER_FRICTION_RANGE) * mu_scene;
     bs_real mu;
+    /* On the low branch |H| hardly depends on s, and near the clamp, where
+     * the map still resolves it, its s error reads the map's error there,
+     * not friction (docs/twin.md, "Friction"): learnt on the high branch only */
     if (!(o->friction_gain > BS_R(0.0)) || !(mu_scene > BS_R(0.0)) || !o->correct_position
-        || (bs_real)obs->steps * sim->scene->dt < o->settle_time || !(obs->estimate.s_sigma < o->friction_sigma))
+        || (bs_real)obs->steps * sim->scene->dt < o->settle_time || !(obs->estimate.s_sigma < o->friction_sigma)
+        || !(obs->estimate.amplitude > BS_R(2.0) * o->friction_amplitude * sim->scene->half_thickness))
         return; /* nothing to learn from: mu^ and what is known of it hold */
     obs->friction_persist += interval / o->friction_time * (obs->estimate.s_error - obs->friction_persist);
     obs->friction_learnt += interval;

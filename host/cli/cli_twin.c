@@ -34,6 +34,7 @@ const char cli_twin_synopsis[] =
     "        [--every N] [--open-loop] [--no-position] [--lockin TAU] [--position-gain G]\n"
     "        [--position-rate R] [--deadband D] [--outlier-gate K] [--score-after T] [--tolerance D]\n"
     "        [--map-frequencies F,F,...] [--friction MU] [--restitution E] [--estimate-friction K]\n"
+    "        [--friction-time T] [--friction-deadband D] [--friction-sigma S] [--friction-amplitude A]\n"
     "        [--set section.key=value ...]";
 const char cli_twin_help[] =
     "  the twin corrected from measured signals (docs/twin.md, \"Observer\")\n"
@@ -48,7 +49,10 @@ const char cli_twin_help[] =
     "  --measured -: a live stream on standard input, read once to its end (give --noise).\n"
     "  --friction MU, --restitution E: the twin's contact laws, set on the running twin (the maps keep the\n"
     "  scene's); --estimate-friction K: mu estimated from the persistent s error at gain K [1/s]\n"
-    "  (docs/twin.md, \"Friction\"); the estimates' last columns mu, mu_sigma.\n";
+    "  (docs/twin.md, \"Friction\"); the estimates' last columns mu, mu_sigma. With it: --friction-time T\n"
+    "  (default 0.5 s) the persistent error's low-pass, --friction-deadband D (default 0.001) what of it\n"
+    "  moves nothing; it learns while s_sigma is below --friction-sigma S (default 0.002) and the\n"
+    "  amplitude above --friction-amplitude A beam thicknesses (default 0.5: the high branch).\n";
 
 const char cli_twin_plant_synopsis[] =
     "beamslider twin-plant SCENE.ini --out FILE.csv [--signal deflection|voltage] [--snr DB]\n"
@@ -89,6 +93,7 @@ typedef struct twin_cli {
     double lockin, position_gain, position_rate, position_deadband, outlier_gate;
     double score_after, tolerance;
     double mu, e_n, friction_gain; /* NAN: the scene's; 0: no estimate */
+    double friction_time, friction_deadband, friction_sigma, friction_amplitude;
 } twin_cli;
 
 /* ---- options ---- */
@@ -139,6 +144,10 @@ static void cli_defaults(twin_cli *c)
     c->name = "bs_observer_gains_scene";
     c->mu = c->e_n = NAN;
     c->friction_gain = BS_OBSERVER_DEFAULT_FRICTION_GAIN;
+    c->friction_time = BS_OBSERVER_DEFAULT_FRICTION_TIME;
+    c->friction_deadband = BS_OBSERVER_DEFAULT_FRICTION_DEADBAND;
+    c->friction_sigma = BS_OBSERVER_DEFAULT_FRICTION_SIGMA;
+    c->friction_amplitude = BS_OBSERVER_DEFAULT_FRICTION_AMPLITUDE;
 }
 
 /* --map-frequencies F,F,...: 1 to BS_OBSERVER_MAPS frequencies [Hz], > 0,
@@ -209,6 +218,10 @@ static int parse_valued(twin_cli *c, const char *option, const char *value)
     else if (!strcmp(option, "--friction")) return parse_number(option, value, 0.0, 10.0, &c->mu);
     else if (!strcmp(option, "--restitution")) return parse_number(option, value, 0.0, 1.0, &c->e_n);
     else if (!strcmp(option, "--estimate-friction")) return parse_number(option, value, 0.0, 1e3, &c->friction_gain);
+    else if (!strcmp(option, "--friction-time")) return parse_number(option, value, 1e-3, 1e3, &c->friction_time);
+    else if (!strcmp(option, "--friction-deadband")) return parse_number(option, value, 0.0, 1.0, &c->friction_deadband);
+    else if (!strcmp(option, "--friction-sigma")) return parse_number(option, value, 1e-6, 1.0, &c->friction_sigma);
+    else if (!strcmp(option, "--friction-amplitude")) return parse_number(option, value, 0.0, 100.0, &c->friction_amplitude);
     else if (!strcmp(option, "--bits") || !strcmp(option, "--every") || !strcmp(option, "--seed")) {
         if (parse_number(option, value, !strcmp(option, "--every") ? 1.0 : 0.0,
                          !strcmp(option, "--bits") ? 24.0 : 4e9, &x) != 0 || x != floor(x)) {
@@ -432,6 +445,10 @@ static twin_run_options run_options(const twin_cli *c)
     o.score_after = c->score_after;
     o.tolerance = c->tolerance;
     o.observer.friction_gain = (bs_real)c->friction_gain;
+    o.observer.friction_time = (bs_real)c->friction_time;
+    o.observer.friction_deadband = (bs_real)c->friction_deadband;
+    o.observer.friction_sigma = (bs_real)c->friction_sigma;
+    o.observer.friction_amplitude = (bs_real)c->friction_amplitude;
     o.mu = c->mu;
     o.e_n = c->e_n;
     return o;
