@@ -33,6 +33,19 @@ static inline bs_real bs_sensor_of(const bs_sim *sim)
     return w;
 }
 
+/* The state a step starts from and commits (q, u, the slider's pose and
+ * velocity, x_C's low part) lies in the sim as one block of 2 BS_MAX_MODES
+ * + 7 words. With five modes and float on a Cortex-M4F (BS_STATE_AS_BLOCK)
+ * the step reads the first 16 with one vldm (bs_load_16), and the step and
+ * the observer's correction write all 17 with one vstm (bs_store_17):
+ * bs_step.c and bs_observer.c. */
+#define BS_STATE_AS_BLOCK (BS_LOAD_4_VLDM && 2 * BS_MAX_MODES + 6 == 16)
+#if BS_STATE_AS_BLOCK
+/* a build where they are not one block fails here */
+typedef char
+    bs_state_is_one_block[offsetof(bs_sim, x_c_low) - offsetof(bs_sim, q_beam) == 16 * sizeof(bs_real) ? 1 : -1];
+#endif
+
 /* The excitation's series coefficients into k (bs_prepare), and the mean
  * base acceleration over sim's next step (bs_excitation_step_mean) with
  * those: read from the sim's RAM, not from flash (core/src/bs_excitation.c). */

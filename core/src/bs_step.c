@@ -88,17 +88,11 @@ static void add_compensated(bs_real *sum, bs_real *low, bs_real increment)
  * float the step reads the first 16 with one vldm (bs_load_16) and writes all
  * 17 with one vstm (bs_store_17): 18 cycles each way, 32 and 34 with a vldr
  * or vstr a word (mid-fig6-float 2437.0 -> 2424.0 cycles a step, 2414.6 with
- * the store). Elsewhere member by member. */
-#define STATE_AS_BLOCK (BS_LOAD_4_VLDM && 2 * BS_MAX_MODES + 6 == 16)
-#if STATE_AS_BLOCK
-/* a build where they are not one block fails here */
-typedef char state_is_one_block[offsetof(bs_sim, x_c_low) - offsetof(bs_sim, q_beam) == 16 * sizeof(bs_real) ? 1 : -1];
-#endif
-
+ * the store). Elsewhere member by member. BS_STATE_AS_BLOCK: bs_sim_internal.h. */
 BS_INLINE void read_start(const bs_sim *sim, const int n, bs_real *q, bs_real *u, bs_real *pose, bs_real *velocity)
 {
     int i;
-#if STATE_AS_BLOCK
+#if BS_STATE_AS_BLOCK
     bs_real block[16];
     bs_load_16(sim->q_beam, block);
     for (i = 0; i < n; ++i) {
@@ -170,7 +164,7 @@ BS_INLINE bs_status smooth_part(const bs_sim *sim, step_state *s, const int n)
         /* linear stiffness at q_B + theta dt u_B; the explicit remainder is the cubic term alone */
         const bs_scene *scene = sim->scene;
 #if BS_WITH_STRETCHING
-        if (BS_UNLIKELY(!(energy >= BS_R(0.0) && energy < k->stretch_limit))
+        if (BS_UNLIKELY(!(energy >= BS_ZERO && energy < k->stretch_limit))
             && !bs_beam_stable(k, n, 0, sq, energy, extra))
             return BS_E_UNSTABLE;
 #endif
@@ -184,7 +178,10 @@ BS_INLINE bs_status smooth_part(const bs_sim *sim, step_state *s, const int n)
 #endif
     {
 #if BS_WITH_STRETCHING
-        if (BS_UNLIKELY(!(energy >= BS_R(0.0) && energy < k->stretch_limit))
+        /* E' >= +0 from a core register (BS_ZERO): with one mode GCC read
+         * the 0 of BS_R(0.0) from a literal in flash every step
+         * (mid-fig6_1mode-float 1026.5 -> 1015.5 cycles a step) */
+        if (BS_UNLIKELY(!(energy >= BS_ZERO && energy < k->stretch_limit))
             && !bs_beam_stable(k, n, k->dt_omega_sq, sq, energy, extra))
             return BS_E_UNSTABLE;
 #endif
@@ -274,11 +271,11 @@ BS_INLINE bs_status end_of_step(const bs_sim *sim, step_state *s, const int n)
 }
 
 /* q_E, u_E, the slider's pose and velocity at the end and x_C's low part
- * into the sim (STATE_AS_BLOCK). */
+ * into the sim (BS_STATE_AS_BLOCK). */
 BS_INLINE void write_end(bs_sim *sim, const step_state *s, const int n)
 {
     int i;
-#if STATE_AS_BLOCK
+#if BS_STATE_AS_BLOCK
     if (n == BS_MAX_MODES) { /* the block is written whole: no mode slot beyond n */
         bs_real block[17];
         for (i = 0; i < n; ++i) {
