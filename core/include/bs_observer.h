@@ -119,11 +119,15 @@ typedef struct bs_observer_options {
                                 stays as set) */
     bs_real friction_time;   /* time constant of the persistent part of the s error [s], > 0 */
     bs_real friction_deadband; /* persistent s errors up to this leave mu alone [1], >= 0 */
-    bs_real friction_sigma;  /* mu is learnt only while s_sigma is below this (the high branch,
-                                where s is measured) [1], > 0 */
+    bs_real friction_sigma;  /* mu is learnt only while s_sigma is below this (where s is
+                                measured: the high branch, and near the clamp the low one) [1],
+                                > 0 */
     bs_real friction_amplitude; /* ... and the twin's w(4L/7) amplitude above this many beam
                                    thicknesses h (the high branch; the low branch stays below
                                    h/4) [1], >= 0 */
+    bs_real friction_climb;  /* ... and while the measured s moves at least this fast (the plant
+                                climbing the high branch; its rate low-passed over 1 s) [1/s],
+                                >= 0 */
 } bs_observer_options;
 
 /* Defaults (tuned on fig6, docs/twin.md): both corrections, lock-in 0.1 s,
@@ -143,6 +147,7 @@ typedef struct bs_observer_options {
 #define BS_OBSERVER_DEFAULT_FRICTION_DEADBAND 0.001
 #define BS_OBSERVER_DEFAULT_FRICTION_SIGMA 0.002
 #define BS_OBSERVER_DEFAULT_FRICTION_AMPLITUDE 0.5
+#define BS_OBSERVER_DEFAULT_FRICTION_CLIMB 0.001
 /* The friction estimate stays within [1 - range, 1 + range] times the
  * scene's mu (twice the +-25 % a plant is drawn with in the twin report). */
 #define BS_OBSERVER_FRICTION_RANGE 0.5
@@ -207,6 +212,9 @@ typedef struct bs_observer {
                                                          of the lock-in's stages (5) */
     bs_real friction_persist;                         /* the s error low-passed over friction_time */
     bs_real friction_learnt;                          /* time spent learning mu [s] */
+    bs_real climb_s;                                  /* the measured s at the last update on the
+                                                         high branch (-1: none) (8) */
+    bs_real climb_rate;                               /* its rate, low-passed over 1 s [1/s] */
     bs_observer_estimate estimate;
     /* the delay lines last: what a sample reads stays within short offsets
      * (a Cortex-M's VLDR reaches 1020 bytes) */

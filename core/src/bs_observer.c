@@ -91,8 +91,12 @@
  *    nominal plant +0.0005. With friction_gain > 0, on the high branch
  *    (the twin's w(4L/7) amplitude above friction_amplitude h, h/2 by
  *    default; the low branch stays below h/4) while s is measured there
- *    (s_sigma below friction_sigma), the s error is low-passed over
- *    friction_time, and what of it is beyond friction_deadband moves mu:
+ *    (s_sigma below friction_sigma) and the plant climbs (the measured s,
+ *    s + s_error, moves at friction_climb or faster, its rate low-passed
+ *    over CLIMB_TIME: on a plateau the s error the map leaves need not
+ *    depend on mu, and integrated it walked mu^ to its clamp), the s
+ *    error is low-passed over friction_time, and what of it is beyond
+ *    friction_deadband moves mu:
  *      dmu/dt = -friction_gain mu_scene (persist -+ friction_deadband),
  *    within (1 +- BS_OBSERVER_FRICTION_RANGE) mu_scene, set on the sim by
  *    bs_sim_set_contact_laws. The deadband keeps the nominal plant's own
@@ -127,6 +131,8 @@
  * persistent s error per unit of relative friction error (fig6). */
 #define FRICTION_LEARN_REF BS_R(2.0)
 #define FRICTION_SENSITIVITY BS_R(0.01)
+/* the time constant of the measured s's rate for the climb gate (8) [s] */
+#define CLIMB_TIME BS_R(1.0)
 #define INV_SQRT3 BS_R(0.5773502691896258)
 /* 5: a change of s larger than this between two updates (0.001 L in 16
  * samples, 3 L/s at dt = 2e-5 s; the slider drifts at hundredths of L a
@@ -165,6 +171,7 @@ bs_observer_options bs_observer_defaults(void)
     o.friction_deadband = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_DEADBAND;
     o.friction_sigma = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_SIGMA;
     o.friction_amplitude = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_AMPLITUDE;
+    o.friction_climb = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_CLIMB;
     return o;
 }
 
@@ -185,7 +192,8 @@ static int valid_options(const bs_observer_options *o)
            && finite(o->outlier_gate * o->outlier_gate) && finite(o->friction_gain) && o->friction_gain >= BS_R(0.0)
            && finite(o->friction_time) && o->friction_time > BS_R(0.0) && finite(o->friction_deadband)
            && o->friction_deadband >= BS_R(0.0) && finite(o->friction_sigma) && o->friction_sigma > BS_R(0.0)
-           && finite(o->friction_amplitude) && o->friction_amplitude >= BS_R(0.0);
+           && finite(o->friction_amplitude) && o->friction_amplitude >= BS_R(0.0) && finite(o->friction_climb)
+           && o->friction_climb >= BS_R(0.0);
 }
 
 /* The maps: s ascending within (0, 1/2], everything finite (|H| < 0: no
@@ -337,8 +345,11 @@ bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer
     obs->options.friction_deadband = options->friction_deadband;
     obs->options.friction_sigma = options->friction_sigma;
     obs->options.friction_amplitude = options->friction_amplitude;
+    obs->options.friction_climb = options->friction_climb;
     obs->friction_persist = BS_R(0.0);
     obs->friction_learnt = BS_R(0.0);
+    obs->climb_s = BS_R(-1.0);
+    obs->climb_rate = BS_R(0.0);
     obs->drift_s = bs_sim_position(sim);
     obs->drift_lag[0] = obs->drift_lag[1] = BS_R(0.0);
     obs->steps = 0;
@@ -809,6 +820,16 @@ static void correct_position(bs_observer *obs, bs_sim *sim, bs_real interval)
     obs->drift_s = bs_sim_position(sim); /* the correction is no drift */
 }
 
+/* 8: the measured s's rate, low-passed over CLIMB_TIME, while it is
+ * measured on the high branch (climb_s < 0: no last value to difference). */
+static void follow_climb(bs_observer *obs, bs_real interval)
+{
+    const bs_real measured = obs->estimate.s + obs->estimate.s_error;
+    if (obs->climb_s >= BS_R(0.0))
+        obs->climb_rate += interval / CLIMB_TIME * ((measured - obs->climb_s) / interval - obs->climb_rate);
+    obs->climb_s = measured;
+}
+
 /* 8: mu from the persistent part of the s error, over interval [s]. */
 static void estimate_friction(bs_observer *obs, bs_sim *sim, bs_real interval)
 {
@@ -822,8 +843,16 @@ static void estimate_friction(bs_observer *obs, bs_sim *sim, bs_real interval)
      * not friction (docs/twin.md, "Friction"): learnt on the high branch only */
     if (!(o->friction_gain > BS_R(0.0)) || !(mu_scene > BS_R(0.0)) || !o->correct_position
         || (bs_real)obs->steps * sim->scene->dt < o->settle_time || !(obs->estimate.s_sigma < o->friction_sigma)
-        || !(obs->estimate.amplitude > BS_R(2.0) * o->friction_amplitude * sim->scene->half_thickness))
+        || !(obs->estimate.amplitude > BS_R(2.0) * o->friction_amplitude * sim->scene->half_thickness)) {
+        obs->climb_s = BS_R(-1.0);
         return; /* nothing to learn from: mu^ and what is known of it hold */
+    }
+    /* ... and there only while the plant climbs: on its plateau the s error
+     * the map leaves need not depend on mu, and mu^ would integrate it
+     * without end (docs/twin.md, "Friction": where it learns) */
+    follow_climb(obs, interval);
+    if (!(bs_fabs(obs->climb_rate) >= o->friction_climb))
+        return;
     obs->friction_persist += interval / o->friction_time * (obs->estimate.s_error - obs->friction_persist);
     obs->friction_learnt += interval;
     mu = sim->k.mu - o->friction_gain * mu_scene * friction_drive(obs) * interval;
@@ -994,6 +1023,8 @@ bs_status bs_observer_set_friction(bs_observer *obs, bs_sim *sim, bs_real mu, bs
         return status;
     obs->friction_learnt = learnt < BS_R(0.0) ? BS_R(0.0) : learnt;
     obs->friction_persist = BS_R(0.0);
+    obs->climb_s = BS_R(-1.0);
+    obs->climb_rate = BS_R(0.0);
     obs->estimate.mu = sim->k.mu;
     obs->estimate.mu_sigma = friction_sigma(obs);
     return BS_OK;

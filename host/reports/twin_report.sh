@@ -43,7 +43,7 @@ CORRECTED=${CORRECTED-}
 # true mu and e_N (bs_sim_set_contact_laws: the best a friction estimate can
 # do), and "estimating", which estimates mu as it runs (docs/twin.md,
 # "Friction"; --estimate-friction at this gain).
-FRICTION_GAIN=${FRICTION_GAIN:-60}
+FRICTION_GAIN=${FRICTION_GAIN:-50}
 # The closed loop's step [s]: the twin's, the plant's outer step (its inner
 # step stays 5e-6 s) and the measured signals' sample period (2e-5 s, the
 # scenes'; 1e-5 s: "The twin's step under friction", docs/twin.md)

@@ -150,7 +150,7 @@ TWIN_COST_SPECS := cortex-m4f:fig6:flash:$(call cm_elf,twin-cost-fig6,cortex-m4f
 # as without it, so that the brackets differ by the estimate alone)
 $(call twin_image,twin-cost-friction-off,cortex-m4f,fig6,float,fig6-1s,sim,-DTWIN_COST=1)
 $(call twin_image,twin-cost-friction-on,cortex-m4f,fig6,float,fig6-1s,sim,-DTWIN_COST=1 -DTWIN_FRICTION_GAIN=60 \
-    -DTWIN_FRICTION_SIGMA=1.5 -DTWIN_FRICTION_AMPLITUDE=0 -DTWIN_FRICTION_DEADBAND=1)
+    -DTWIN_FRICTION_SIGMA=1.5 -DTWIN_FRICTION_AMPLITUDE=0 -DTWIN_FRICTION_CLIMB=0 -DTWIN_FRICTION_DEADBAND=1)
 twin-friction-cost: $(if $(CM_TOOLS_OK),$(call cm_elf,twin-cost-friction-off,cortex-m4f) \
         $(call cm_elf,twin-cost-friction-on,cortex-m4f) $(TWIN_DIR)/fig6-1s.stream)
 	$(if $(CM_TOOLS_OK),@sh host/reports/friction_cost.sh $(call cm_elf,twin-cost-friction-off,cortex-m4f) \

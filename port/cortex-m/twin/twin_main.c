@@ -21,7 +21,7 @@
  * run, so that a step reads no constant from flash), TWIN_FIFO_SAMPLES,
  * TWIN_BLOCK_SAMPLES, TWIN_FRICTION_GAIN (the observer's friction_gain: 0,
  * the default, no friction estimate), TWIN_FRICTION_SIGMA,
- * TWIN_FRICTION_AMPLITUDE and TWIN_FRICTION_DEADBAND (its gates and
+ * TWIN_FRICTION_AMPLITUDE, TWIN_FRICTION_CLIMB and TWIN_FRICTION_DEADBAND (its gates and
  * deadband; a cost image opens the gates and widens the deadband so that
  * the estimate runs every update without changing mu, and so the
  * trajectory: docs/twin.md, "Friction"), and those
@@ -61,6 +61,9 @@
 #endif
 #ifndef TWIN_FRICTION_AMPLITUDE
 #define TWIN_FRICTION_AMPLITUDE BS_OBSERVER_DEFAULT_FRICTION_AMPLITUDE
+#endif
+#ifndef TWIN_FRICTION_CLIMB
+#define TWIN_FRICTION_CLIMB BS_OBSERVER_DEFAULT_FRICTION_CLIMB
 #endif
 #ifndef TWIN_FRICTION_DEADBAND
 #define TWIN_FRICTION_DEADBAND BS_OBSERVER_DEFAULT_FRICTION_DEADBAND
@@ -215,6 +218,7 @@ static bs_status start(const bs_scene *scene, const bs_observer_gains *gains)
     options.friction_gain = (bs_real)TWIN_FRICTION_GAIN;
     options.friction_sigma = (bs_real)TWIN_FRICTION_SIGMA;
     options.friction_amplitude = (bs_real)TWIN_FRICTION_AMPLITUDE;
+    options.friction_climb = (bs_real)TWIN_FRICTION_CLIMB;
     options.friction_deadband = (bs_real)TWIN_FRICTION_DEADBAND;
     solver.max_sweeps = BS_SCENE_SOLVER_MAX_SWEEPS;
     solver.tol_rel = BS_SCENE_SOLVER_TOL_REL;
