@@ -153,10 +153,16 @@ fi
 "$bin" twin-gains configs/fig6.ini --noise 1e-6 --set excitation.schedule=0:60:14,10:124:14 >/dev/null 2>"$tmp/e"
 check_status "twin-gains on a schedule from 60 Hz to 124 Hz exits 2" 2 $? "$tmp/e"
 check_has "... naming the span, the maps it needs and the option" "$tmp/e" \
-    "the [excitation] schedule spans 60 Hz to 124 Hz, which needs 38 response maps spaced by 1.02; at most 8 fit (name the frequencies the twin will meet with --map-frequencies)"
+    "the [excitation] schedule spans 60 Hz to 124 Hz, which needs 38 response maps spaced by 1.02; at most 24 fit (name the frequencies the twin will meet with --map-frequencies)"
 "$bin" twin-gains configs/fig6.ini --noise 1e-6 --map-frequencies 124,110 >/dev/null 2>"$tmp/e"
 check_status "twin-gains --map-frequencies 124,110 exits 2" 2 $? "$tmp/e"
-check_has "... naming the frequency out of order" "$tmp/e" "--map-frequencies 124,110: frequency 2: allowed: 1 to 8 frequencies [Hz], > 0, ascending"
+check_has "... naming the frequency out of order" "$tmp/e" "--map-frequencies 124,110: frequency 2: allowed: 1 to 24 frequencies [Hz], > 0, ascending"
+"$bin" twin-gains configs/fig6.ini --noise 1e-6 --map-frictions 0.2,0.15 >/dev/null 2>"$tmp/e"
+check_status "twin-gains --map-frictions 0.2,0.15 exits 2" 2 $? "$tmp/e"
+check_has "... naming the mu out of order" "$tmp/e" "--map-frictions 0.2,0.15: mu 2: allowed: 1 to 24 friction coefficients, >= 0, ascending"
+"$bin" twin-gains configs/fig6_shift.ini --noise 1e-6 --map-frictions 0.1,0.15,0.2,0.25 >/dev/null 2>"$tmp/e"
+check_status "twin-gains of fig6_shift's 8 excitations at 4 mu exits 2" 2 $? "$tmp/e"
+check_has "... counting the maps that would need" "$tmp/e" "8 excitations with maps at 4 friction coefficients each need 32 response maps; at most 24 fit"
 
 # ---- a negative load is refused with its file, line and range
 printf '[scene]\nbase = mssp2023.ini\n[transducer]\nload = resistor\nresistance = -5\n' >"$tmp/negative.ini"

@@ -506,6 +506,14 @@ static void test_init_refuses_what_does_not_fit(void **state)
     bad.map_frequency[1] = bad.map_frequency[0];
     bad.map_accel[1] = bad.map_accel[0];
     assert_int_equal(bs_observer_init(&obs, &twin, &bad, NULL), BS_E_ARGUMENT);
+    bad.map_friction[1] = BS_R(2.0) * bad.map_friction[0]; /* ... unless it is a map at another mu */
+    assert_int_equal(bs_observer_init(&obs, &twin, &bad, NULL), BS_OK);
+    bad.map_accel[1] = BS_R(2.0) * bad.map_accel[0]; /* of the same excitation */
+    assert_int_equal(bs_observer_init(&obs, &twin, &bad, NULL), BS_E_ARGUMENT);
+    bad.map_accel[1] = bad.map_accel[0];
+    bad.map_friction[1] = (bs_real)NAN;
+    assert_int_equal(bs_observer_init(&obs, &twin, &bad, NULL), BS_E_ARGUMENT);
+    bad.map_friction[1] = bad.map_friction[0];
     bad.map_frequency[1] = BS_R(1.5) * bad.map_frequency[0];
     assert_int_equal(bs_observer_init(&obs, &twin, &bad, NULL), BS_OK);
     bad.table_soft[1][7] = (bs_real)NAN;
@@ -663,6 +671,47 @@ static void test_a_state_set_from_outside_is_no_drift(void **state)
     assert_true(fabs((double)e.s_error + 0.01) < 5e-4);
 }
 
+/* Maps of one excitation at several mu follow the twin's mu: fig6's map at
+ * mu 0.1, and at mu 0.3 the same map moved 0.01 up in s (|H|(s - 0.01)).
+ * A plant at 0.30 on the first map, the twin beside it: the measured s
+ * reads 0.30 with the twin at mu 0.1, 0.31 at 0.3 and beyond it (0.4: the
+ * last map alone), and between them what the interpolated map gives at 0.2
+ * (+0.005 to first order), each within 0.0005 after 1.2 s. */
+static void test_maps_follow_the_twins_friction(void **state)
+{
+    static bs_observer_gains two;
+    static const double mu[] = { 0.1, 0.2, 0.3, 0.4 }, shift[] = { 0.0, 0.005, 0.01, 0.01 };
+    bs_observer_options options = bs_observer_defaults();
+    int i, j;
+    long k;
+    (void)state;
+    start_synthetic(0.30);
+    two = gains;
+    two.map_count = 2;
+    two.map_frequency[1] = two.map_frequency[0];
+    two.map_accel[1] = two.map_accel[0];
+    two.map_friction[0] = BS_R(0.1);
+    two.map_friction[1] = BS_R(0.3);
+    for (j = 0; j < two.table_count; ++j) {
+        two.table_stiff[1][j] = (bs_real)stiff_response((double)two.table_s[j] - 0.01);
+        two.table_soft[1][j] = two.table_soft[0][j];
+    }
+    options.correct_position = 0;
+    for (i = 0; i < 4; ++i) {
+        bs_observer_estimate e;
+        assert_int_equal(bs_sim_init(&twin, &scene, BS_MODEL_FREE, BS_R(0.30)), BS_OK);
+        assert_int_equal(bs_sim_set_contact_laws(&twin, (bs_real)mu[i], scene.e_n), BS_OK);
+        assert_int_equal(bs_observer_init(&obs, &twin, &two, &options), BS_OK);
+        for (k = 1; k <= lround(1.2 / (double)scene.dt); ++k)
+            synthetic_sample(k, 0.30, 0.30);
+        assert_int_equal(bs_observer_get(&obs, &e), BS_OK);
+        print_message("maps at mu 0.1 and 0.3 (moved +0.01), twin at mu %.1f: s error %+.5f\n", mu[i],
+                      (double)e.s_error);
+        assert_true(e.s_sigma < obs.options.sigma_hold);
+        assert_true(fabs((double)e.s_error - shift[i]) < 5e-4);
+    }
+}
+
 /* The design: finite gains, each taking a part of the innovation in (0, 1)
  * at the sensor (C K of a Kalman filter), and a response map on both
  * branches around fig6's turning point. */
@@ -736,6 +785,7 @@ int main(void)
         cmocka_unit_test(test_measured_s_on_the_maps_own_plant_is_unbiased),
         cmocka_unit_test(test_measured_s_of_a_climbing_slider_is_not_behind),
         cmocka_unit_test(test_a_state_set_from_outside_is_no_drift),
+        cmocka_unit_test(test_maps_follow_the_twins_friction),
         cmocka_unit_test(test_init_refuses_what_does_not_fit),
         cmocka_unit_test(test_nan_measurement_is_refused_without_change),
         cmocka_unit_test(test_outliers_are_skipped_counted_and_flagged),

@@ -15,8 +15,9 @@
  *   2. corrects the slider position s = x_C / L, which nobody measures, from
  *      how the beam responds: the measured signal is demodulated against a_k
  *      (a lock-in), and the response magnitude |H| is located on a map of
- *      the scene's own response against s (host-made, both branches); a
- *      slow, rate-limited integral action moves x_C toward it;
+ *      the scene's own response against s (host-made, both branches; at
+ *      the twin's mu where maps at several mu were made); a slow,
+ *      rate-limited integral action moves x_C toward it;
  *   3. optionally (friction_gain > 0) estimates the plant's Coulomb friction
  *      from the persistent part of that s error on the high branch and sets
  *      it on the twin (bs_sim_set_contact_laws; docs/twin.md, "Friction").
@@ -48,14 +49,17 @@ extern "C" {
 /* Points of the response map (the first-harmonic response against s). */
 #define BS_OBSERVER_TABLE 48
 
-/* Room for response maps, one per excitation (frequency, amplitude): an
- * ambient frequency that moves is followed map to map. A firmware whose
- * excitation keeps one frequency saves 2 x 48 values per map with
+/* Room for response maps, one per excitation (frequency, amplitude) and
+ * friction coefficient: an ambient frequency that moves is followed map to
+ * map, and maps of one excitation made at several mu are interpolated at the
+ * twin's mu (which the friction estimate moves). The default holds eight
+ * excitations at three mu each. A firmware whose excitation keeps one
+ * frequency and whose maps do not follow mu saves 2 x 48 values per map with
  * -DBS_OBSERVER_MAPS=1 (core and application compiled with the same value,
  * as for BS_OBSERVER_MAX_LATENCY; gains printed by `beamslider twin-gains`
  * refuse to compile with fewer than they carry). */
 #ifndef BS_OBSERVER_MAPS
-#define BS_OBSERVER_MAPS 8
+#define BS_OBSERVER_MAPS 24
 #endif
 
 /* What the measured beam signal is. */
@@ -79,8 +83,14 @@ typedef struct bs_observer_gains {
     bs_real gain_u[BS_OBSERVER_GAINS][BS_MAX_MODES]; /* L_u: modal velocity per unit of e */
     bs_real gain_v[BS_OBSERVER_GAINS];  /* L_v: patch voltage per unit of e (0 without a transducer) */
     int map_count;                      /* response maps, 1 .. BS_OBSERVER_MAPS */
-    bs_real map_frequency[BS_OBSERVER_MAPS]; /* the excitation map m was made at: f_ex [Hz], ascending */
+    bs_real map_frequency[BS_OBSERVER_MAPS]; /* the excitation map m was made at: f_ex [Hz], ascending
+                                               (equal for maps of one excitation at several mu) */
     bs_real map_accel[BS_OBSERVER_MAPS];     /* and its amplitude a [m/s^2] */
+    bs_real map_friction[BS_OBSERVER_MAPS];  /* and the Coulomb friction mu it was made at, >= 0.
+                                               Maps of one excitation (equal frequency and
+                                               amplitude), in ascending mu, are interpolated
+                                               linearly at the twin's mu; beyond the first or
+                                               last the nearest is used alone */
     int table_count;                    /* points of each response map, 2 .. BS_OBSERVER_TABLE */
     bs_real table_s[BS_OBSERVER_TABLE]; /* s, ascending, within [stop_min / L, 1/2] */
     bs_real table_stiff[BS_OBSERVER_MAPS][BS_OBSERVER_TABLE]; /* map m: |H| [signal unit per m/s^2]

@@ -57,7 +57,11 @@
  *    sqrt(2 <a^2>), frequency kappa / 2 pi) is that of
  *    the map nearest in frequency within excitation_tolerance (a map holds
  *    for its excitation only; a scene whose ambient frequency moves carries
- *    maps at several, up to BS_OBSERVER_MAPS).
+ *    maps at several, up to BS_OBSERVER_MAPS). Where the design made maps
+ *    of one excitation at several mu, |H|(s) is theirs interpolated
+ *    linearly at the twin's mu (the friction estimate's, 8): the plateau a
+ *    slider settles on, and so the map's reading, moves with mu (a plant
+ *    with 20 % less friction than the map reads 0.004 high on fig6).
  *    Errors up to position_deadband are not corrected: with a model whose
  *    frequencies are off, the map is off too (3 % moves it by ~0.01 on
  *    fig6), and within that band the twin's own slider dynamics, driven by
@@ -196,19 +200,32 @@ static int valid_options(const bs_observer_options *o)
            && o->friction_climb >= BS_R(0.0);
 }
 
+/* Map m + 1 is made at map m's excitation (at another mu). */
+static int same_excitation(const bs_observer_gains *g, int m)
+{
+    return g->map_frequency[m + 1] == g->map_frequency[m];
+}
+
 /* The maps: s ascending within (0, 1/2], everything finite (|H| < 0: no
- * such branch at that s), each with the excitation it was made at, in
- * ascending frequency. */
+ * such branch at that s), each with the excitation and mu it was made at,
+ * in ascending frequency, and the maps of one excitation (equal frequency
+ * and amplitude) in ascending mu. */
 static int valid_table(const bs_observer_gains *g)
 {
     int i, m;
     if (g->table_count < 2 || g->table_count > BS_OBSERVER_TABLE || g->map_count < 1
         || g->map_count > BS_OBSERVER_MAPS)
         return 0;
-    for (m = 0; m < g->map_count; ++m)
+    for (m = 0; m < g->map_count; ++m) {
         if (!finite(g->map_frequency[m]) || !(g->map_frequency[m] > BS_R(0.0)) || !finite(g->map_accel[m])
-            || !(g->map_accel[m] > BS_R(0.0)) || (m > 0 && !(g->map_frequency[m] > g->map_frequency[m - 1])))
+            || !(g->map_accel[m] > BS_R(0.0)) || !finite(g->map_friction[m]) || !(g->map_friction[m] >= BS_R(0.0)))
             return 0;
+        if (m > 0 && !(g->map_frequency[m] > g->map_frequency[m - 1]) && !same_excitation(g, m - 1))
+            return 0;
+        if (m > 0 && same_excitation(g, m - 1)
+            && !(g->map_accel[m] == g->map_accel[m - 1] && g->map_friction[m] > g->map_friction[m - 1]))
+            return 0;
+    }
     for (i = 0; i < g->table_count; ++i) {
         if (!finite(g->table_s[i]) || !(g->table_s[i] > BS_R(0.0) && g->table_s[i] <= BS_R(0.5)))
             return 0;
@@ -667,16 +684,34 @@ static bs_real angle_of(bs_real y, bs_real x)
     return y < BS_R(0.0) ? -r : r;
 }
 
-/* On one branch of the map, the crossing of |H|(s) with target nearest to
- * near: *s_cross and the slope d|H|/ds of its segment. Returns 0 if the
- * branch never reaches target. */
-static int invert_map(const bs_observer_gains *g, const bs_real *h, bs_real target, bs_real near, bs_real *s_cross,
-                      bs_real *slope)
+/* One branch at the twin's mu: the map's values h, or with weight > 0
+ * those of h and of the map at the next mu, `above', interpolated. */
+typedef struct map_branch {
+    const bs_real *h, *above;
+    bs_real weight;
+} map_branch;
+
+/* |H| of branch b at point i; negative where it does not exist in either
+ * map. */
+static bs_real branch_value(const map_branch *b, int i)
+{
+    if (b->weight == BS_R(0.0))
+        return b->h[i];
+    if (b->h[i] < BS_R(0.0) || b->above[i] < BS_R(0.0))
+        return BS_R(-1.0);
+    return b->h[i] + b->weight * (b->above[i] - b->h[i]);
+}
+
+/* On one branch, the crossing of |H|(s) with target nearest to near:
+ * *s_cross and the slope d|H|/ds of its segment. Returns 0 if the branch
+ * never reaches target. */
+static int invert_map(const bs_observer_gains *g, const map_branch *b, bs_real target, bs_real near,
+                      bs_real *s_cross, bs_real *slope)
 {
     bs_real best = BS_R(2.0);
     int i, found = 0;
     for (i = 0; i + 1 < g->table_count && g->table_s[i] - near < best; ++i) {
-        const bs_real h0 = h[i], h1 = h[i + 1];
+        const bs_real h0 = branch_value(b, i), h1 = branch_value(b, i + 1);
         if (h0 < BS_R(0.0) || h1 < BS_R(0.0))
             continue; /* the branch does not exist there */
         if ((h0 - target) * (h1 - target) <= BS_R(0.0) && h0 != h1) {
@@ -692,8 +727,25 @@ static int invert_map(const bs_observer_gains *g, const bs_real *h, bs_real targ
     return found;
 }
 
-/* The map nearest in frequency to the measured excitation, if that is its
- * own within the tolerance; else -1. */
+/* The branch of the maps of map's excitation (maps map, map + 1, ... of
+ * its frequency, ascending in mu) at the twin's mu: between the two maps
+ * whose mu bracket it, linearly; beyond the first or last, that map. */
+static void branch_at(const bs_observer_gains *g, int map, int stiff, bs_real mu, map_branch *b)
+{
+    const bs_real(*table)[BS_OBSERVER_TABLE] = stiff ? g->table_stiff : g->table_soft;
+    int m = map;
+    while (m + 1 < g->map_count && same_excitation(g, m) && g->map_friction[m + 1] <= mu)
+        ++m;
+    b->h = b->above = table[m];
+    b->weight = BS_R(0.0);
+    if (m + 1 < g->map_count && same_excitation(g, m) && mu > g->map_friction[m]) {
+        b->above = table[m + 1];
+        b->weight = (mu - g->map_friction[m]) / (g->map_friction[m + 1] - g->map_friction[m]);
+    }
+}
+
+/* The first map of the excitation nearest in frequency to the measured
+ * one, if that is its own within the tolerance; else -1. */
 static int matching_map(const bs_observer *obs, bs_real frequency, bs_real amplitude)
 {
     const bs_observer_gains *g = obs->gains;
@@ -730,6 +782,7 @@ static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
     complex_real h_m, h_t, h_w, ratio;
     bs_real aa, hm_abs, s_near, s_cross = BS_R(0.0), slope = BS_R(0.0), s_error, sigma_h;
     bs_real var_spread;
+    map_branch branch;
     int mirror, map;
 
     est->s = bs_sim_position(sim);
@@ -757,9 +810,8 @@ static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
         return;
     mirror = est->s > BS_R(0.5);
     s_near = mirror ? BS_R(1.0) - est->s : est->s;
-    if (!invert_map(g, h_m.re < BS_R(0.0) ? g->table_stiff[map] : g->table_soft[map], hm_abs, s_near, &s_cross,
-                    &slope)
-        || slope == BS_R(0.0))
+    branch_at(g, map, h_m.re < BS_R(0.0), sim->k.mu, &branch);
+    if (!invert_map(g, &branch, hm_abs, s_near, &s_cross, &slope) || slope == BS_R(0.0))
         return;
     s_error = (mirror ? s_near - s_cross : s_cross - s_near) + obs->drift_lag[1];
     {

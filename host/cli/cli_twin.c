@@ -33,8 +33,8 @@ const char cli_twin_synopsis[] =
     "        [--latency S] [--noise SIGMA] [--accel-noise SIGMA] [--force-noise N] [--s0 S] [--t-end T]\n"
     "        [--every N] [--open-loop] [--no-position] [--lockin TAU] [--position-gain G]\n"
     "        [--position-rate R] [--deadband D] [--outlier-gate K] [--score-after T] [--tolerance D]\n"
-    "        [--map-frequencies F,F,...] [--friction MU] [--restitution E] [--estimate-friction K]\n"
-    "        [--friction-time T] [--friction-deadband D] [--friction-sigma S] [--friction-amplitude A]\n"
+    "        [--map-frequencies F,F,...] [--map-frictions MU,MU,...] [--friction MU] [--restitution E]\n"
+    "        [--estimate-friction K] [--friction-time T] [--friction-deadband D] [--friction-sigma S] [--friction-amplitude A]\n"
     "        [--friction-climb R] [--set section.key=value ...]";
 const char cli_twin_help[] =
     "  the twin corrected from measured signals (docs/twin.md, \"Observer\")\n"
@@ -48,7 +48,8 @@ const char cli_twin_help[] =
     "  s_true, or one that ends before T).\n"
     "  --measured -: a live stream on standard input, read once to its end (give --noise).\n"
     "  --friction MU, --restitution E: the twin's contact laws, set on the running twin (the maps keep the\n"
-    "  scene's); --estimate-friction K: mu estimated from the persistent s error at gain K [1/s]\n"
+    "  scene's, or with --map-frictions MU,MU,... [ascending] are made at each and follow the twin's mu);\n"
+    "  --estimate-friction K: mu estimated from the persistent s error at gain K [1/s]\n"
     "  (docs/twin.md, \"Friction\"); the estimates' last columns mu, mu_sigma. With it: --friction-time T\n"
     "  (default 0.5 s) the persistent error's low-pass, --friction-deadband D (default 0.001) what of it\n"
     "  moves nothing; it learns while s_sigma is below --friction-sigma S (default 0.002) and the\n"
@@ -67,11 +68,13 @@ const char cli_twin_plant_help[] =
 
 const char cli_twin_gains_synopsis[] =
     "beamslider twin-gains SCENE.ini --noise SIGMA [--signal deflection|voltage] [--latency S]\n"
-    "        [--accel-noise SIGMA] [--force-noise N] [--map-frequencies F,F,...] [--name NAME]\n"
+    "        [--accel-noise SIGMA] [--force-noise N] [--map-frequencies F,F,...] [--map-frictions MU,MU,...]\n"
+    "        [--name NAME]\n"
     "        [--set section.key=value ...]";
 const char cli_twin_gains_help[] =
     "  the observer's constants (bs_observer_gains) as a C header on stdout\n"
-    "  Response maps at --map-frequencies [Hz, ascending], else at the scene's excitation or across its schedule.\n";
+    "  Response maps at --map-frequencies [Hz, ascending], else at the scene's excitation or across its schedule;\n"
+    "  each at every one of --map-frictions [mu, ascending], else at the scene's mu.\n";
 
 /* The options of the three commands (each uses some). */
 typedef struct twin_cli {
@@ -80,6 +83,8 @@ typedef struct twin_cli {
     int set_count;
     int map_count;              /* --map-frequencies (0: from the scene) */
     double map_frequency[BS_OBSERVER_MAPS];
+    int friction_count;         /* --map-frictions (0: the scene's mu) */
+    double map_friction[BS_OBSERVER_MAPS];
     int signal;                 /* -1: not given */
     double latency;             /* [s] */
     double noise, accel_noise;  /* NAN: not given */
@@ -152,22 +157,24 @@ static void cli_defaults(twin_cli *c)
     c->friction_climb = BS_OBSERVER_DEFAULT_FRICTION_CLIMB;
 }
 
-/* --map-frequencies F,F,...: 1 to BS_OBSERVER_MAPS frequencies [Hz], > 0,
+/* --map-frequencies F,F,... or --map-frictions MU,MU,...: 1 to
+ * BS_OBSERVER_MAPS numbers, above low (or at it, with low_allowed),
  * ascending. Returns 0, or -1 after reporting what is wrong. */
-static int parse_map_frequencies(twin_cli *c, const char *value)
+static int parse_ascending(const char *option, const char *value, const char *item, const char *what, double low,
+                           int low_allowed, double *list, int *count)
 {
     const char *p = value;
-    c->map_count = 0;
+    *count = 0;
     for (;;) {
         char *end;
         const double f = strtod(p, &end);
-        if (c->map_count == BS_OBSERVER_MAPS || end == p || (*end != ',' && *end != '\0') || !isfinite(f)
-            || !(f > 0.0) || (c->map_count > 0 && !(f > c->map_frequency[c->map_count - 1]))) {
-            cli_error("--map-frequencies %s: frequency %d: allowed: 1 to %d frequencies [Hz], > 0, ascending, "
-                      "separated by commas", value, c->map_count + 1, BS_OBSERVER_MAPS);
+        if (*count == BS_OBSERVER_MAPS || end == p || (*end != ',' && *end != '\0') || !isfinite(f)
+            || !(f > low || (low_allowed && f == low)) || (*count > 0 && !(f > list[*count - 1]))) {
+            cli_error("%s %s: %s %d: allowed: 1 to %d %s, %s %g, ascending, separated by commas", option, value,
+                      item, *count + 1, BS_OBSERVER_MAPS, what, low_allowed ? ">=" : ">", low);
             return -1;
         }
-        c->map_frequency[c->map_count++] = f;
+        list[(*count)++] = f;
         if (*end == '\0')
             return 0;
         p = end + 1;
@@ -200,7 +207,12 @@ static int parse_valued(twin_cli *c, const char *option, const char *value)
             return -1;
         }
         c->sets[c->set_count++] = value;
-    } else if (!strcmp(option, "--map-frequencies")) return parse_map_frequencies(c, value);
+    } else if (!strcmp(option, "--map-frequencies"))
+        return parse_ascending(option, value, "frequency", "frequencies [Hz]", 0.0, 0, c->map_frequency,
+                               &c->map_count);
+    else if (!strcmp(option, "--map-frictions"))
+        return parse_ascending(option, value, "mu", "friction coefficients", 0.0, 1, c->map_friction,
+                               &c->friction_count);
     else if (!strcmp(option, "--latency")) return parse_number(option, value, 0.0, 1.0, &c->latency);
     else if (!strcmp(option, "--noise")) return parse_number(option, value, 1e-300, HUGE_VAL, &c->noise);
     else if (!strcmp(option, "--accel-noise")) return parse_number(option, value, 0.0, HUGE_VAL, &c->accel_noise);
@@ -398,6 +410,8 @@ static int design(const twin_cli *c, twin_scene *t, int signal, double noise, do
     o.accel_noise = isnan(accel_noise) ? 0.0 : accel_noise;
     o.map_count = c->map_count;
     memcpy(o.map_frequency, c->map_frequency, sizeof o.map_frequency);
+    o.friction_count = c->friction_count;
+    memcpy(o.map_friction, c->map_friction, sizeof o.map_friction);
     if (latency > BS_OBSERVER_MAX_LATENCY) {
         cli_error("--latency %g: at most %d steps (%g s)", c->latency, BS_OBSERVER_MAX_LATENCY,
                   BS_OBSERVER_MAX_LATENCY * t->file.params.dt);

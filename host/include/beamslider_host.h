@@ -288,6 +288,9 @@ typedef struct bs_host_twin_options {
     double latency;             /* the signal lags the acceleration by this much [s] (0) */
     int map_count;              /* response maps at map_frequency[]; 0: from the scene */
     double map_frequency[BS_OBSERVER_MAPS];
+    int friction_count;         /* each at map_friction[] (mu, ascending), followed at the twin's mu;
+                                   0: at the scene's mu */
+    double map_friction[BS_OBSERVER_MAPS];
     bs_host_progress progress;
     void *progress_context;
 } bs_host_twin_options;

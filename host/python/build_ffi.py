@@ -115,6 +115,7 @@ typedef struct {
     int map_count;
     bs_real map_frequency[...];
     bs_real map_accel[...];
+    bs_real map_friction[...];
     int table_count;
     ...;
 } bs_observer_gains;
@@ -252,6 +253,8 @@ typedef struct {
     double latency;
     int map_count;
     double map_frequency[...];
+    int friction_count;
+    double map_friction[...];
     bs_host_progress progress;
     void *progress_context;
     ...;

@@ -44,6 +44,10 @@ CORRECTED=${CORRECTED-}
 # do), and "estimating", which estimates mu as it runs (docs/twin.md,
 # "Friction"; --estimate-friction at this gain).
 FRICTION_GAIN=${FRICTION_GAIN:-50}
+# MAP_FRICTIONS=0.15,0.2,0.25: both with response maps made at these mu,
+# which the observer interpolates at the twin's mu (--map-frictions;
+# docs/twin.md "Friction", "Maps that follow mu"); by default the scene's maps.
+MAP_FRICTIONS=${MAP_FRICTIONS-}
 # The closed loop's step [s]: the twin's, the plant's outer step (its inner
 # step stays 5e-6 s) and the measured signals' sample period (2e-5 s, the
 # scenes'; 1e-5 s: "The twin's step under friction", docs/twin.md)
@@ -229,9 +233,11 @@ plant() {
     "$BIN" twin "$w/twin_c.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.comm" --s0 0.35 --every 50 \
         --noise "$noise" $COMMISSIONED > "$tmp/${name}_$seed.comm.json"
     "$BIN" twin "$w/twin_c.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.ceil" --s0 0.35 --every 50 \
-        --noise "$noise" $COMMISSIONED --friction "$mu_p" --restitution "$en_p" > "$tmp/${name}_$seed.ceil.json"
+        --noise "$noise" $COMMISSIONED ${MAP_FRICTIONS:+--map-frictions "$MAP_FRICTIONS"} --friction "$mu_p" \
+        --restitution "$en_p" > "$tmp/${name}_$seed.ceil.json"
     "$BIN" twin "$w/twin_c.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.mu" --s0 0.35 --every 50 \
-        --noise "$noise" $COMMISSIONED --estimate-friction "$FRICTION_GAIN" > "$tmp/${name}_$seed.mu.json"
+        --noise "$noise" $COMMISSIONED ${MAP_FRICTIONS:+--map-frictions "$MAP_FRICTIONS"} \
+        --estimate-friction "$FRICTION_GAIN" > "$tmp/${name}_$seed.mu.json"
     if [ "${CEILING_MAPS:-0}" = 1 ]; then # the ceiling with its maps designed at the plant's mu and e_N too
         { cat "$w/twin_c.ini"; printf '[contact]\nfriction = %s\nrestitution = %s\n' "$mu_p" "$en_p"; } > "$w/twin_m.ini"
         "$BIN" twin "$w/twin_m.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.maps" --s0 0.35 --every 50 \
@@ -512,10 +518,12 @@ A decay that dies more than twice as fast as the model's is not used (docs/twin.
 Friction and restitution are not identified by commissioning. Two more twins
 are commissioned the same way: the **ceiling**, told the plant's drawn mu and
 e_N (\`--friction MU --restitution E\`: bs_sim_set_contact_laws on the running
-twin; its maps stay the nominal scene's), the best a friction estimate can do,
+twin), the best a friction estimate can do,
 and the **estimating** twin, which estimates mu while it runs (\`--estimate-friction
-$FRICTION_GAIN\`, docs/twin.md "Friction"). Statistics pooled over the plants
-after 5 s.
+$FRICTION_GAIN\`, docs/twin.md "Friction"). $(if [ -n "$MAP_FRICTIONS" ]; then
+echo "Both have response maps made at mu = $MAP_FRICTIONS, which follow the twin's mu (\`--map-frictions\`); the"
+echo "other twins the scene's maps at its mu."; else echo "Every twin's maps are the scene's, at its mu."; fi)
+Statistics pooled over the plants after 5 s.
 
 ### Slider position
 

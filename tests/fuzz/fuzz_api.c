@@ -534,7 +534,7 @@ static void edit_gains(input *in)
     int e;
     gains = designed[base == 1];
     for (e = 0; e < edits; ++e) {
-        const unsigned field = take_byte(in) % 16;
+        const unsigned field = take_byte(in) % 17;
         const unsigned i = take_byte(in), k = take_byte(in);
         const int gi = (int)(i % BS_OBSERVER_GAINS), ti = (int)(i % BS_OBSERVER_TABLE), m = (int)(k % BS_OBSERVER_MAPS);
         switch (field) {
@@ -553,6 +553,7 @@ static void edit_gains(input *in)
         case 12: gains.table_count = take_int(in, gains.table_count); break;
         case 13: gains.table_s[ti] = take_value(in, gains.table_s[ti]); break;
         case 14: gains.table_stiff[m][ti] = take_value(in, gains.table_stiff[m][ti]); break;
+        case 15: gains.map_friction[m] = take_value(in, gains.map_friction[m]); break;
         default: gains.table_soft[m][ti] = take_value(in, gains.table_soft[m][ti]); break;
         }
     }

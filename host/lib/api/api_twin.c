@@ -47,6 +47,8 @@ bs_host_status bs_host_twin_design_(uint32_t observer_tag, size_t gains_size, co
     o.latency = (int)latency;
     o.map_count = options->map_count;
     memcpy(o.map_frequency, options->map_frequency, sizeof o.map_frequency);
+    o.friction_count = options->friction_count;
+    memcpy(o.map_friction, options->map_friction, sizeof o.map_friction);
     o.progress = options->progress;
     o.progress_context = options->progress_context;
     if (observer_design(&scene->file, &scene->model, &scene->scene, &o, gains, err, sizeof err) != 0)

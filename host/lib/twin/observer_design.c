@@ -85,8 +85,9 @@ observer_design_options observer_design_defaults(double noise)
     o.map_hold = OBSERVER_DEFAULT_MAP_HOLD;
     o.map_record = OBSERVER_DEFAULT_MAP_RECORD;
     o.map_count = 0; /* the maps' frequencies from the scene */
+    o.friction_count = 0; /* one map per excitation, at the scene's mu */
     for (i = 0; i < BS_OBSERVER_MAPS; ++i)
-        o.map_frequency[i] = 0.0;
+        o.map_frequency[i] = o.map_friction[i] = 0.0;
     o.progress = NULL;
     o.progress_context = NULL;
     return o;
@@ -446,6 +447,29 @@ static int map_excitations(const scene_file *file, const bs_scene *scene, const 
     return 0;
 }
 
+/* Each excitation's map repeated at each of the options' mu (ascending, the
+ * maps of one excitation next to each other), or the scene's mu alone.
+ * Returns 0, or -1 with a message in err. */
+static int map_frictions(const bs_scene *scene, const observer_design_options *o, bs_observer_gains *gains,
+                         char *err, size_t err_size)
+{
+    const int per = o->friction_count > 0 ? o->friction_count : 1;
+    int m, f;
+    if (gains->map_count * per > BS_OBSERVER_MAPS) {
+        snprintf(err, err_size, "observer design: %d excitations with maps at %d friction coefficients each need %d "
+                 "response maps; at most %d fit", gains->map_count, per, gains->map_count * per, BS_OBSERVER_MAPS);
+        return -1;
+    }
+    for (m = gains->map_count - 1; m >= 0; --m) /* from the last: slot m * per + f is at or after m */
+        for (f = per - 1; f >= 0; --f) {
+            gains->map_frequency[m * per + f] = gains->map_frequency[m];
+            gains->map_accel[m * per + f] = gains->map_accel[m];
+            gains->map_friction[m * per + f] = o->friction_count > 0 ? (bs_real)o->map_friction[f] : scene->mu;
+        }
+    gains->map_count *= per;
+    return 0;
+}
+
 /* The response maps: at each map's excitation, PCS sweeps of the scene over
  * [stop_min / L, 1/2], up from the clamp (stiff branch) and down from the
  * centre (soft branch). */
@@ -459,7 +483,7 @@ static int response_map(const scene_file *file, const bs_scene *scene, const obs
     int i, m, branch;
 
     double steps = 0.0, done = 0.0;
-    if (map_excitations(file, scene, o, gains, err, err_size) != 0)
+    if (map_excitations(file, scene, o, gains, err, err_size) != 0 || map_frictions(scene, o, gains, err, err_size) != 0)
         return -1;
     for (m = 0; m < gains->map_count; ++m) /* the cost, before any of it is spent */
         steps += 2.0 * count * (o->map_hold + o->map_record) / ((double)gains->map_frequency[m] * (double)scene->dt);
@@ -490,6 +514,8 @@ static int response_map(const scene_file *file, const bs_scene *scene, const obs
                 status = bs_sim_set_solver(sim, &solver);
             if (status == BS_OK)
                 status = bs_sim_set_excitation(sim, gains->map_frequency[m], gains->map_accel[m]);
+            if (status == BS_OK)
+                status = bs_sim_set_contact_laws(sim, gains->map_friction[m], scene->e_n);
             for (i = 0; status == BS_OK && i < count; ++i) {
                 const int j = branch ? count - 1 - i : i;
                 double h = 0.0;
@@ -567,6 +593,17 @@ static int check_options(const scene_data *d, const observer_design_options *o, 
             || (i > 0 && !(o->map_frequency[i] > o->map_frequency[i - 1]))) {
             snprintf(err, err_size, "observer design: map frequency %d (%g Hz) must be finite, > 0 and above the "
                      "one before", i + 1, o->map_frequency[i]);
+            return -1;
+        }
+    if (o->friction_count < 0 || o->friction_count > BS_OBSERVER_MAPS) {
+        snprintf(err, err_size, "observer design: %d map frictions; 1 to %d", o->friction_count, BS_OBSERVER_MAPS);
+        return -1;
+    }
+    for (i = 0; i < o->friction_count; ++i)
+        if (!(o->map_friction[i] >= 0.0 && isfinite(o->map_friction[i]))
+            || (i > 0 && !(o->map_friction[i] > o->map_friction[i - 1]))) {
+            snprintf(err, err_size, "observer design: map friction %d (%g) must be finite, >= 0 and above the one "
+                     "before", i + 1, o->map_friction[i]);
             return -1;
         }
     return 0;
@@ -676,6 +713,7 @@ int observer_print_gains(FILE *out, const bs_observer_gains *g, const char *name
     failed |= fprintf(out, "    /* map_count */ %d,\n", g->map_count) < 0;
     failed |= print_array(out, "map_frequency", g->map_frequency, g->map_count);
     failed |= print_array(out, "map_accel", g->map_accel, g->map_count);
+    failed |= print_array(out, "map_friction", g->map_friction, g->map_count);
     failed |= fprintf(out, "    /* table_count */ %d,\n", g->table_count) < 0;
     failed |= print_array(out, "table_s", g->table_s, g->table_count);
     failed |= print_rows(out, "table_stiff", g->table_stiff[0], BS_OBSERVER_TABLE, g->map_count, g->table_count);

@@ -26,6 +26,10 @@ typedef struct observer_design_options {
     int map_count;        /* response maps at map_frequency[], 1 .. BS_OBSERVER_MAPS; 0: from the
                              scene (observer_design) */
     double map_frequency[BS_OBSERVER_MAPS]; /* [Hz], > 0, ascending */
+    int friction_count;   /* maps at each excitation, one per map_friction[], map_count (or the
+                             scene's excitations) times friction_count at most BS_OBSERVER_MAPS;
+                             0: one, at the scene's mu */
+    double map_friction[BS_OBSERVER_MAPS]; /* mu, >= 0, ascending */
     progress_hook progress; /* NULL, or told the part done as the response maps are made */
     void *progress_context;
 } observer_design_options;
@@ -67,7 +71,9 @@ observer_design_options observer_design_defaults(double noise);
  * from its lowest to its highest (an error if more than BS_OBSERVER_MAPS
  * are needed). Each map's amplitude is that of the schedule point nearest
  * in frequency (of several, the strongest; without a schedule, the
- * scene's). Returns 0, or -1 with a
+ * scene's). With friction_count > 0 each excitation has a map at each of
+ * options->map_friction[] (the sweeps' sim set to that mu, the scene's e_N),
+ * which the observer interpolates at the twin's mu. Returns 0, or -1 with a
  * message in err. */
 int observer_design(const scene_file *file, const scene_model *model, const bs_scene *scene,
                     const observer_design_options *options, bs_observer_gains *gains, char *err, size_t err_size);

@@ -155,10 +155,27 @@ int twin_unscored_reason(const twin_tally *tally, const twin_run_options *o, cha
     return 1;
 }
 
+/* The mu the first excitation's maps were made at, "0.15,0.2,0.25"
+ * (the maps follow the twin's mu when there are several). */
+static const char *map_frictions(const bs_observer_gains *gains, char *text, size_t size)
+{
+    size_t used = 0;
+    int m;
+    text[0] = '\0';
+    for (m = 0; m < gains->map_count && (m == 0 || gains->map_frequency[m] == gains->map_frequency[0]); ++m) {
+        const int n = snprintf(text + used, size - used, "%s%g", m ? "," : "", (double)gains->map_friction[m]);
+        if (n < 0 || (size_t)n >= size - used)
+            break;
+        used += (size_t)n;
+    }
+    return text;
+}
+
 int twin_print_summary(FILE *out, const scene_file *file, const bs_observer_gains *gains, const twin_run_options *o,
                        const twin_tally *tally, double noise)
 {
     const int scored = tally->scored > 0;
+    char frictions[32 * BS_OBSERVER_MAPS];
     out_json j;
     out_json_start(&j);
     out_json_text(&j, "scene", file->params.name);
@@ -166,6 +183,8 @@ int twin_print_summary(FILE *out, const scene_file *file, const bs_observer_gain
     out_json_count(&j, "rows", (unsigned long long)tally->rows);
     out_json_number(&j, "noise", "%.6g", noise);
     out_json_int(&j, "latency_steps", gains->latency);
+    out_json_int(&j, "maps", gains->map_count);
+    out_json_text(&j, "map_frictions", map_frictions(gains, frictions, sizeof frictions));
     out_json_int(&j, "beam_correction", o->observer.correct_beam);
     out_json_int(&j, "position_correction", o->observer.correct_position);
     out_json_number(&j, "rms_innovation", "%.6g", tally->rows ? sqrt(tally->innovation_sq / (double)tally->rows) : 0.0);

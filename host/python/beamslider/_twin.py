@@ -28,13 +28,15 @@ class Gains:
 
     @classmethod
     def design(cls, scene, noise, signal="deflection", force_noise=None, accel_noise=None, latency=0.0,
-               map_frequencies=None, progress=None):
+               map_frequencies=None, map_frictions=None, progress=None):
         """Designs the observer of `beamslider twin-gains` (bs_host_twin_design):
         noise, the signal's noise standard deviation [m or V]; signal
         "deflection" (w(4L/7) [m]) or "voltage" (the patch's [V], resistor
         load); force_noise [N/sqrt(Hz)], accel_noise [m/s^2], latency [s]
         (None: the library's defaults); map_frequencies: the response maps'
-        excitation frequencies [Hz] (None: the scene's). Raises SceneError
+        excitation frequencies [Hz] (None: the scene's); map_frictions: mu
+        at which each is made, followed at the twin's mu (None: the scene's
+        mu; docs/twin.md, "Maps that follow mu"). Raises SceneError
         (an option out of range), RunError."""
         b = cls._b
         ffi, lib = b.ffi, b.lib
@@ -58,6 +60,14 @@ class Gains:
             options.map_count = len(frequencies)
             for i, f in enumerate(frequencies):
                 options.map_frequency[i] = f
+        if map_frictions is not None:
+            frictions = list(map_frictions)
+            if not 1 <= len(frictions) <= lib.BS_OBSERVER_MAPS:
+                raise ArgumentError("map_frictions: %d values, allowed: 1 to %d"
+                                    % (len(frictions), lib.BS_OBSERVER_MAPS))
+            options.friction_count = len(frictions)
+            for i, mu in enumerate(frictions):
+                options.map_friction[i] = mu
         hook = Hook(b, progress)
         options.progress = lib.bspy_progress
         options.progress_context = hook.handle
@@ -74,6 +84,7 @@ class Gains:
         self.n_modes, self.latency, self.noise = g.n_modes, g.latency, float(g.noise)
         self.map_frequency = [float(g.map_frequency[i]) for i in range(g.map_count)]
         self.map_accel = [float(g.map_accel[i]) for i in range(g.map_count)]
+        self.map_friction = [float(g.map_friction[i]) for i in range(g.map_count)]
         return self
 
     def __repr__(self):

@@ -30,3 +30,11 @@ def test_gains_refuse_a_bad_noise():
     scene = beamslider.Scene.load(config("fig6"))
     with pytest.raises(beamslider.SceneError, match="noise"):
         scene.twin_gains(-1.0)
+
+
+def test_gains_refuse_map_frictions_out_of_order():
+    scene = beamslider.Scene.load(config("fig6"))
+    with pytest.raises(beamslider.SceneError, match="map friction 2"):
+        scene.twin_gains(1e-6, map_frictions=[0.2, 0.1])
+    with pytest.raises(beamslider.ArgumentError, match="map_frictions"):
+        scene.twin_gains(1e-6, map_frictions=[])
