@@ -684,34 +684,16 @@ static bs_real angle_of(bs_real y, bs_real x)
     return y < BS_R(0.0) ? -r : r;
 }
 
-/* One branch at the twin's mu: the map's values h, or with weight > 0
- * those of h and of the map at the next mu, `above', interpolated. */
-typedef struct map_branch {
-    const bs_real *h, *above;
-    bs_real weight;
-} map_branch;
-
-/* |H| of branch b at point i; negative where it does not exist in either
- * map. */
-static bs_real branch_value(const map_branch *b, int i)
-{
-    if (b->weight == BS_R(0.0))
-        return b->h[i];
-    if (b->h[i] < BS_R(0.0) || b->above[i] < BS_R(0.0))
-        return BS_R(-1.0);
-    return b->h[i] + b->weight * (b->above[i] - b->h[i]);
-}
-
-/* On one branch, the crossing of |H|(s) with target nearest to near:
- * *s_cross and the slope d|H|/ds of its segment. Returns 0 if the branch
- * never reaches target. */
-static int invert_map(const bs_observer_gains *g, const map_branch *b, bs_real target, bs_real near,
-                      bs_real *s_cross, bs_real *slope)
+/* On one branch of the map (values h), the crossing of |H|(s) with target
+ * nearest to near: *s_cross and the slope d|H|/ds of its segment. Returns
+ * 0 if the branch never reaches target. */
+static int invert_map(const bs_observer_gains *g, const bs_real *h, bs_real target, bs_real near, bs_real *s_cross,
+                      bs_real *slope)
 {
     bs_real best = BS_R(2.0);
     int i, found = 0;
     for (i = 0; i + 1 < g->table_count && g->table_s[i] - near < best; ++i) {
-        const bs_real h0 = branch_value(b, i), h1 = branch_value(b, i + 1);
+        const bs_real h0 = h[i], h1 = h[i + 1];
         if (h0 < BS_R(0.0) || h1 < BS_R(0.0))
             continue; /* the branch does not exist there */
         if ((h0 - target) * (h1 - target) <= BS_R(0.0) && h0 != h1) {
@@ -729,19 +711,37 @@ static int invert_map(const bs_observer_gains *g, const map_branch *b, bs_real t
 
 /* The branch of the maps of map's excitation (maps map, map + 1, ... of
  * its frequency, ascending in mu) at the twin's mu: between the two maps
- * whose mu bracket it, linearly; beyond the first or last, that map. */
-static void branch_at(const bs_observer_gains *g, int map, int stiff, bs_real mu, map_branch *b)
+ * whose mu bracket it, interpolated linearly into blend (negative where
+ * either has no branch); beyond the first or last, that map's own values.
+ * With room for one map there is nothing to interpolate (a firmware's
+ * -DBS_OBSERVER_MAPS=1: no blend on its stack). */
+#if BS_OBSERVER_MAPS > 1
+#define BLEND_ROOM BS_OBSERVER_TABLE
+#else
+#define BLEND_ROOM 1
+#endif
+static const bs_real *branch_at(const bs_observer_gains *g, int map, int stiff, bs_real mu, bs_real *blend)
 {
     const bs_real(*table)[BS_OBSERVER_TABLE] = stiff ? g->table_stiff : g->table_soft;
-    int m = map;
+#if BS_OBSERVER_MAPS > 1
+    const bs_real *low, *high;
+    bs_real weight;
+    int m = map, i;
     while (m + 1 < g->map_count && same_excitation(g, m) && g->map_friction[m + 1] <= mu)
         ++m;
-    b->h = b->above = table[m];
-    b->weight = BS_R(0.0);
-    if (m + 1 < g->map_count && same_excitation(g, m) && mu > g->map_friction[m]) {
-        b->above = table[m + 1];
-        b->weight = (mu - g->map_friction[m]) / (g->map_friction[m + 1] - g->map_friction[m]);
-    }
+    if (!(m + 1 < g->map_count && same_excitation(g, m) && mu > g->map_friction[m]))
+        return table[m];
+    low = table[m];
+    high = table[m + 1];
+    weight = (mu - g->map_friction[m]) / (g->map_friction[m + 1] - g->map_friction[m]);
+    for (i = 0; i < g->table_count; ++i)
+        blend[i] = low[i] < BS_R(0.0) || high[i] < BS_R(0.0) ? BS_R(-1.0) : low[i] + weight * (high[i] - low[i]);
+    return blend;
+#else
+    (void)mu;
+    (void)blend;
+    return table[map];
+#endif
 }
 
 /* The first map of the excitation nearest in frequency to the measured
@@ -782,7 +782,7 @@ static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
     complex_real h_m, h_t, h_w, ratio;
     bs_real aa, hm_abs, s_near, s_cross = BS_R(0.0), slope = BS_R(0.0), s_error, sigma_h;
     bs_real var_spread;
-    map_branch branch;
+    bs_real blend[BLEND_ROOM];
     int mirror, map;
 
     est->s = bs_sim_position(sim);
@@ -810,8 +810,8 @@ static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
         return;
     mirror = est->s > BS_R(0.5);
     s_near = mirror ? BS_R(1.0) - est->s : est->s;
-    branch_at(g, map, h_m.re < BS_R(0.0), sim->k.mu, &branch);
-    if (!invert_map(g, &branch, hm_abs, s_near, &s_cross, &slope) || slope == BS_R(0.0))
+    if (!invert_map(g, branch_at(g, map, h_m.re < BS_R(0.0), sim->k.mu, blend), hm_abs, s_near, &s_cross, &slope)
+        || slope == BS_R(0.0))
         return;
     s_error = (mirror ? s_near - s_cross : s_cross - s_near) + obs->drift_lag[1];
     {
