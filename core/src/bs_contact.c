@@ -118,18 +118,6 @@ BS_INLINE bs_real cos_of_slope(const bs_real *c, bs_real w_slope)
     return BS_R(1.0) / bs_sqrt(BS_R(1.0) + x);
 }
 
-/* Has the compiler read again what it reads through pointer p from here on,
- * rather than keep what it read before: an empty asm statement that may
- * change p (GCC and Clang; elsewhere nothing). For values it would keep
- * across a long stretch of code in registers it does not have: it spills
- * them to the stack and reads them back, a store and a load where a load
- * would do. */
-#if defined(__GNUC__)
-#define READ_AGAIN(p) __asm__("" : "+r"(p))
-#else
-#define READ_AGAIN(p) ((void)0)
-#endif
-
 /* A slot corner at the midpoint and the beam under it. */
 typedef struct corner_point {
     bs_real arm_x, arm_z;          /* A rho */
@@ -164,7 +152,7 @@ BS_INLINE void add_corner(int n, const bs_step_constants *k, const bs_shape_cach
     const int a = set->count++;
 
     set->id[a] = corner;
-    READ_AGAIN(cache); /* the 20 coefficients of the side's mode sums: kept, they spilled */
+    BS_FORGET(cache); /* the 20 coefficients of the side's mode sums: kept, they spilled */
     bs_shape_expanded(n, cache, p->t, p->on_beam, k->slope_scale, set->phi[a], set->slope[a]);
     set->percussion[BS_ROWS * a] = warm[corner][0]; /* the warm start: its last percussion */
 #if BS_WITH_FRICTION
@@ -505,13 +493,13 @@ BS_INLINE void problem_of_two(int n, const bs_step_constants *k, bs_contact_set 
     /* read back what the detection (inlined before it) wrote: kept, it
      * spilled (here rather than in problem, whose lone corner is better off
      * with what GCC keeps) */
-    READ_AGAIN(set);
+    BS_FORGET(set);
     /* and the step's velocities, its own arrays: GCC read each of u_beam's
      * again at every product, four times in all (mid-fig6-float 2455.6 ->
      * 2441.9 cycles a step with u_slider's; the same for u_beam_before,
      * u_slider_before or k cost 3 to 5 more) */
-    READ_AGAIN(u_beam);
-    READ_AGAIN(u_slider);
+    BS_FORGET(u_beam);
+    BS_FORGET(u_slider);
     corner_pass(n, k, set, 0, u_beam, u_slider, u_beam_before, u_slider_before);
     cross_products(n, k, set, 1, 0, dot);
     delassus_block(k, set, 1, 0, dot);
@@ -600,13 +588,13 @@ BS_INLINE void apply(int n, const bs_step_constants *k, const bs_contact_set *se
         push[i] = BS_ZERO;
     if (set->count == 1 && set->id[0] < BS_CORNERS) { /* one corner (most contact steps): no loop over the set */
         const bs_real (*slope)[BS_MAX_MODES] = set->slope;
-        READ_AGAIN(slope); /* beyond a VLDR's reach of the sim: one base, not an address computed for each */
+        BS_FORGET(slope); /* beyond a VLDR's reach of the sim: one base, not an address computed for each */
         percussion_of(set, 0, &along_phi[0], &along_slope[0], push);
         for (i = 0; i < n; ++i)
             u_beam[i] += MODE_GAIN(k, i) * (along_phi[0] * set->phi[0][i] + along_slope[0] * slope[0][i]);
     } else if (set->count == 2 && set->id[1] < BS_CORNERS) { /* two corners: one pass over the modes */
         const bs_real (*slope)[BS_MAX_MODES] = set->slope;
-        READ_AGAIN(slope);
+        BS_FORGET(slope);
         percussion_of(set, 0, &along_phi[0], &along_slope[0], push);
         percussion_of(set, 1, &along_phi[1], &along_slope[1], push);
         for (i = 0; i < n; ++i)

@@ -39,6 +39,21 @@
 #define BS_STEP_STAGE_ALWAYS
 #endif
 
+/* BS_FORGET(p): the compiler no longer knows pointer p's value (an empty
+ * asm statement that may change it; GCC and Clang, elsewhere nothing), so
+ * it reads what it reads through p from here on instead of keeping what it
+ * read before, and takes p for an address in a register, not for a
+ * link-time constant. For values it would keep over a long stretch in
+ * registers it does not have (it spills them, a store and a load where a
+ * load would do), and for a firmware's static sim or observer (GCC reads
+ * the address of each member from a literal in flash otherwise). Each use
+ * says which, and what it saved. */
+#if defined(__GNUC__)
+#define BS_FORGET(p) __asm__("" : "+r"(p))
+#else
+#define BS_FORGET(p) ((void)0)
+#endif
+
 /* BS_ZERO: +0 for a sum to start at. A Cortex-M's FPU has no immediate 0,
  * and GCC reads a float 0 from a literal in flash; this one is an integer
  * 0 moved into the FPU (movs, vmov), the same bits. BS_ROUNDING(m): m eps

@@ -555,19 +555,6 @@ static void correction_of(bs_observer *obs, const bs_sim *sim, bs_real e, correc
 #endif
 }
 
-/* sim, as an address the compiler no longer takes for a link-time
- * constant (as in_register below): with a firmware's static sim,
- * commit_correction's vstm then addresses the state from the register that
- * holds the sim, not from a literal read from flash (a load with wait
- * states). Nothing else changes. */
-#if BS_STATE_AS_BLOCK
-static bs_sim *sim_in_register(bs_sim *sim)
-{
-    __asm__("" : "+r"(sim)); /* BS_STATE_AS_BLOCK: GCC */
-    return sim;
-}
-#endif
-
 /* c into the sim if it is a state bs_sim_set_state accepts (and the voltage
  * finite); returns 1, or 0 and leaves the sim as it was. Finiteness as one
  * sum (a sum of finite values that overflows is refused too). */
@@ -586,18 +573,12 @@ static int commit_correction(bs_sim *sim, const corrected_state *c)
          * for 34 (twin-cost-friction-off 2306.2 -> 2292.2 cycles an
          * observer step). Not the vldm of the step's read: the correction
          * needs the values elsewhere than s0-s15, and the moves cost more
-         * (2310.2) */
-        bs_real block[17];
-        for (k = 0; k < BS_MAX_MODES; ++k) {
-            block[k] = c->q[k];
-            block[BS_MAX_MODES + k] = c->u[k];
-        }
-        for (k = 0; k < 3; ++k) {
-            block[2 * BS_MAX_MODES + k] = c->slider[k];
-            block[2 * BS_MAX_MODES + 3 + k] = c->velocity[k];
-        }
-        block[2 * BS_MAX_MODES + 6] = c->x_low;
-        bs_store_17(sim_in_register(sim)->q_beam, block);
+         * (2310.2). The sim's address forgotten (BS_FORGET): with a
+         * firmware's static sim the vstm addresses the state from the
+         * register that holds it, not from a literal read from flash. */
+        bs_sim *target = sim;
+        BS_FORGET(target);
+        bs_store_state(target, c->q, c->u, c->slider[0], c->slider[1], c->slider[2], c->velocity, c->x_low);
     } else
 #endif
     {
@@ -930,15 +911,13 @@ static bs_status usable(const bs_observer *obs, const bs_sim *sim)
 }
 
 /* obs, as an address the compiler no longer takes for a link-time
- * constant: with the observer a static (a firmware's), GCC would read the
- * address of each block the lock-in and the correction move with one vldm
- * or vstm from a literal in flash (a load with wait states) instead of
- * adding its offset to the register that holds obs. Nothing else changes. */
+ * constant (BS_FORGET): with the observer a static (a firmware's), GCC
+ * would read the address of each block the lock-in and the correction move
+ * with one vldm or vstm from a literal in flash (a load with wait states)
+ * instead of adding its offset to the register that holds obs. */
 static bs_observer *in_register(bs_observer *obs)
 {
-#if defined(__GNUC__)
-    __asm__("" : "+r"(obs));
-#endif
+    BS_FORGET(obs);
     return obs;
 }
 

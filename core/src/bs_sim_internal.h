@@ -44,6 +44,27 @@ static inline bs_real bs_sensor_of(const bs_sim *sim)
 /* a build where they are not one block fails here */
 typedef char
     bs_state_is_one_block[offsetof(bs_sim, x_c_low) - offsetof(bs_sim, q_beam) == 16 * sizeof(bs_real) ? 1 : -1];
+
+/* q, u (all BS_MAX_MODES), the slider's pose (x, z, beta) and velocity and
+ * x_C's low part into sim's state block with one vstm: the step's commit
+ * and the observer's correction. */
+BS_INLINE void bs_store_state(bs_sim *sim, const bs_real *q, const bs_real *u, bs_real x, bs_real z, bs_real beta,
+                              const bs_real *velocity, bs_real x_low)
+{
+    bs_real block[2 * BS_MAX_MODES + 7];
+    int i;
+    for (i = 0; i < BS_MAX_MODES; ++i) {
+        block[i] = q[i];
+        block[BS_MAX_MODES + i] = u[i];
+    }
+    block[2 * BS_MAX_MODES] = x;
+    block[2 * BS_MAX_MODES + 1] = z;
+    block[2 * BS_MAX_MODES + 2] = beta;
+    for (i = 0; i < 3; ++i)
+        block[2 * BS_MAX_MODES + 3 + i] = velocity[i];
+    block[2 * BS_MAX_MODES + 6] = x_low;
+    bs_store_17(sim->q_beam, block);
+}
 #endif
 
 /* The excitation's series coefficients into k (bs_prepare), and the mean

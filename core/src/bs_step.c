@@ -86,7 +86,7 @@ static void add_compensated(bs_real *sum, bs_real *low, bs_real increment)
  * pose and velocity (n modes) and x_C's low part, lie one after the other in
  * the sim (bs_sim_layout.h): with five modes 17 words. On a Cortex-M4F with
  * float the step reads the first 16 with one vldm (bs_load_16) and writes all
- * 17 with one vstm (bs_store_17): 18 cycles each way, 32 and 34 with a vldr
+ * 17 with one vstm (bs_store_state): 18 cycles each way, 32 and 34 with a vldr
  * or vstr a word (mid-fig6-float 2437.0 -> 2424.0 cycles a step, 2414.6 with
  * the store). Elsewhere member by member. BS_STATE_AS_BLOCK: bs_sim_internal.h. */
 BS_INLINE void read_start(const bs_sim *sim, const int n, bs_real *q, bs_real *u, bs_real *pose, bs_real *velocity)
@@ -277,18 +277,7 @@ BS_INLINE void write_end(bs_sim *sim, const step_state *s, const int n)
     int i;
 #if BS_STATE_AS_BLOCK
     if (n == BS_MAX_MODES) { /* the block is written whole: no mode slot beyond n */
-        bs_real block[17];
-        for (i = 0; i < n; ++i) {
-            block[i] = s->q[i];
-            block[BS_MAX_MODES + i] = s->u_beam[i];
-        }
-        block[2 * BS_MAX_MODES] = s->x_end;
-        block[2 * BS_MAX_MODES + 1] = s->slider[1];
-        block[2 * BS_MAX_MODES + 2] = s->slider[2];
-        for (i = 0; i < 3; ++i)
-            block[2 * BS_MAX_MODES + 3 + i] = s->u_slider[i];
-        block[2 * BS_MAX_MODES + 6] = s->x_end_low;
-        bs_store_17(sim->q_beam, block);
+        bs_store_state(sim, s->q, s->u_beam, s->x_end, s->slider[1], s->slider[2], s->u_slider, s->x_end_low);
         return;
     }
 #endif
@@ -410,12 +399,10 @@ bs_status bs_sim_step_measured(bs_sim *sim, bs_real base_accel)
 
 bs_status bs_step_measured(bs_sim *sim, bs_real base_accel)
 {
-#if defined(__GNUC__)
     /* A firmware's observer steps one sim, a global: under -flto GCC
      * specialises the step for its address and reads the address of each
-     * member it uses from flash (a literal each). Through this empty asm
-     * the address is a value in a register, the members offsets from it. */
-    __asm__("" : "+r"(sim));
-#endif
+     * member it uses from flash (a literal each); forgotten, the address is
+     * a value in a register, the members offsets from it. */
+    BS_FORGET(sim);
     return step(sim, base_accel);
 }
