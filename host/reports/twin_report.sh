@@ -306,6 +306,24 @@ gap_stats() { # gap_stats NAME -> "plants_more_than_3_points_below_their_ceiling
         echo "$(within_digits 4 "$f") $(within_digits 4 "${f%.ceil}.mu")"
     done | awk '{ g = $1 - $2; if (g > 0.03) n++; if (g > m) m = g } END { printf "%d %.3f", n, m }'
 }
+# the plants more than 3 points below their ceiling, and where the gap lies:
+# before the estimating twin's mu^ first moves (it has learnt nothing yet:
+# the low branch and the first jump) and after; the rows after 5 s, which
+# the .mu and .ceil files share
+gap_split() { # gap_split NAME LABEL -> table rows "| LABEL k | gap | before | after | learning from |"
+    for f in "$TMP/$1"_*.ceil; do
+        k=${f%.ceil}
+        awk -F, -v plant="$2 ${k##*_}" -v mu0="$MU" '
+            FNR == 1 { file++; next }
+            $1 + 0 <= 5 { next }
+            file == 1 { if (!learning && $13 + 0 != mu0) { learning = 1; from = $1 } late[FNR] = learning; n++
+                        d = $2 - $8; if (d < 0) d = -d; if (d <= 0.005) { if (learning) el++; else ee++ }; next }
+            { d = $2 - $8; if (d < 0) d = -d; if (d <= 0.005) { if (late[FNR]) cl++; else ce++ } }
+            END { g = (ce + cl - ee - el) / n; if (g > 0.03)
+                  printf "| %s | %.3f | %.3f | %.3f | %s |\n", plant, g, (ce - ee) / n, (cl - el) / n,
+                         learning ? sprintf("%.1f s", from) : "never" }' "${f%.ceil}.mu" "$f"
+    done
+}
 # the 1 s windows in which the plant jumps branches: its amplitude (half the
 # peak-to-peak of w(4L/7) over 0.1 s, .amp) from below 0.25 h to above 0.7 h
 # or back (h = 1 mm), the windows the crossing spans and one either side
@@ -531,6 +549,15 @@ $s_table
 
 Target: abs(s_twin - s_plant) <= 0.005 for 95 % of the time, and on every
 plant within 3 percentage points of its ceiling.
+
+$(rows=$(gap_split fig6 fig6; gap_split fig8 fig8; gap_split shift fig6_shift)
+if [ -n "$rows" ]; then
+    printf '%s\n' "The plants more than 3 points below their ceiling, and where their gap lies (its part"
+    printf '%s\n' "in the time before the estimating twin's mu^ first moves, when it has learnt nothing yet, and"
+    printf '%s\n\n' "after; the time within 0.005 over the rows after 5 s):"
+    printf '%s\n' "| plant | gap | before mu^ moves | after | mu^ moves from |" "|---|---|---|---|---|"
+    printf '%s\n' "$rows"
+fi)
 
 ### Friction estimate
 
