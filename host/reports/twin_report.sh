@@ -271,7 +271,7 @@ work_dir
 # the section's and the figures' stamp (host/reports/provenance.sh), naming the knobs
 # that differ from the defaults
 . host/reports/provenance.sh
-stamp=$(provenance_stamp "make twin-report$( [ "$PLANTS" = 32 ] || printf ' PLANTS=%s' "$PLANTS")$( [ "$PLANTS_OTHER" = 8 ] || printf ' PLANTS_OTHER=%s' "$PLANTS_OTHER")$( [ "$PLANTS_SHIFT" = "$PLANTS_OTHER" ] || printf ' PLANTS_SHIFT=%s' "$PLANTS_SHIFT")")
+stamp=$(provenance_stamp "make twin-report$( [ "$PLANTS" = 32 ] || printf ' PLANTS=%s' "$PLANTS")$( [ "$PLANTS_OTHER" = 8 ] || printf ' PLANTS_OTHER=%s' "$PLANTS_OTHER")$( [ "$PLANTS_SHIFT" = "$PLANTS_OTHER" ] || printf ' PLANTS_SHIFT=%s' "$PLANTS_SHIFT")$( [ -z "$MAP_FRICTIONS" ] || printf ' MAP_FRICTIONS=%s' "$MAP_FRICTIONS")")
 # name scene t_end load f0 a0 plants
 cat > "$TMP/scenes" <<EOF
 fig6 fig6 60 71e3 124 14 $PLANTS
