@@ -59,9 +59,8 @@
  *    for its excitation only; a scene whose ambient frequency moves carries
  *    maps at several, up to BS_OBSERVER_MAPS). Where the design made maps
  *    of one excitation at several mu, |H|(s) is theirs interpolated
- *    linearly at the twin's mu (the friction estimate's, 8): the plateau a
- *    slider settles on, and so the map's reading, moves with mu (a plant
- *    with 20 % less friction than the map reads 0.004 high on fig6).
+ *    linearly at the twin's mu (the friction estimate's, 8; what that does:
+ *    docs/twin.md, "Maps that follow mu").
  *    Errors up to position_deadband are not corrected: with a model whose
  *    frequencies are off, the map is off too (3 % moves it by ~0.01 on
  *    fig6), and within that band the twin's own slider dynamics, driven by
