@@ -34,8 +34,8 @@ const char cli_twin_synopsis[] =
     "        [--every N] [--open-loop] [--no-position] [--lockin TAU] [--position-gain G]\n"
     "        [--position-rate R] [--deadband D] [--outlier-gate K] [--score-after T] [--tolerance D]\n"
     "        [--map-frequencies F,F,...] [--map-frictions MU,MU,...] [--friction MU] [--restitution E]\n"
-    "        [--estimate-friction K] [--friction-time T] [--friction-deadband D] [--friction-sigma S] [--friction-amplitude A]\n"
-    "        [--friction-climb R] [--set section.key=value ...]";
+    "        [--estimate-friction K] [--friction-time T] [--friction-deadband D] [--friction-sigma S]\n"
+    "        [--friction-amplitude A] [--friction-climb R] [--set section.key=value ...]";
 const char cli_twin_help[] =
     "  the twin corrected from measured signals (docs/twin.md, \"Observer\")\n"
     "  Runs the scene on the measured base acceleration, corrected from the measured signal; EST.csv every N steps: t,\n"
@@ -69,8 +69,7 @@ const char cli_twin_plant_help[] =
 const char cli_twin_gains_synopsis[] =
     "beamslider twin-gains SCENE.ini --noise SIGMA [--signal deflection|voltage] [--latency S]\n"
     "        [--accel-noise SIGMA] [--force-noise N] [--map-frequencies F,F,...] [--map-frictions MU,MU,...]\n"
-    "        [--name NAME]\n"
-    "        [--set section.key=value ...]";
+    "        [--name NAME] [--set section.key=value ...]";
 const char cli_twin_gains_help[] =
     "  the observer's constants (bs_observer_gains) as a C header on stdout\n"
     "  Response maps at --map-frequencies [Hz, ascending], else at the scene's excitation or across its schedule;\n"
