@@ -16,6 +16,17 @@ _SIGNALS = ("deflection", "voltage")
 ESTIMATE_DEFAULT = ("t", "s", "s_sigma", "amplitude", "innovation")
 
 
+def _map_values(lib, name, values, slots):
+    """values (1 to BS_OBSERVER_MAPS of them) into the C array slots; their
+    count. Raises ArgumentError naming the option."""
+    values = list(values)
+    if not 1 <= len(values) <= lib.BS_OBSERVER_MAPS:
+        raise ArgumentError("%s: %d values, allowed: 1 to %d" % (name, len(values), lib.BS_OBSERVER_MAPS))
+    for i, v in enumerate(values):
+        slots[i] = v
+    return len(values)
+
+
 class Gains:
     """The observer's constants for one scene, signal chain and noise
     (bs_observer_gains), designed by scene.twin_gains() or
@@ -53,21 +64,9 @@ class Gains:
             options.accel_noise = accel_noise
         options.latency = latency
         if map_frequencies is not None:
-            frequencies = list(map_frequencies)
-            if not 1 <= len(frequencies) <= lib.BS_OBSERVER_MAPS:
-                raise ArgumentError("map_frequencies: %d values, allowed: 1 to %d"
-                                    % (len(frequencies), lib.BS_OBSERVER_MAPS))
-            options.map_count = len(frequencies)
-            for i, f in enumerate(frequencies):
-                options.map_frequency[i] = f
+            options.map_count = _map_values(lib, "map_frequencies", map_frequencies, options.map_frequency)
         if map_frictions is not None:
-            frictions = list(map_frictions)
-            if not 1 <= len(frictions) <= lib.BS_OBSERVER_MAPS:
-                raise ArgumentError("map_frictions: %d values, allowed: 1 to %d"
-                                    % (len(frictions), lib.BS_OBSERVER_MAPS))
-            options.friction_count = len(frictions)
-            for i, mu in enumerate(frictions):
-                options.map_friction[i] = mu
+            options.friction_count = _map_values(lib, "map_frictions", map_frictions, options.map_friction)
         hook = Hook(b, progress)
         options.progress = lib.bspy_progress
         options.progress_context = hook.handle
