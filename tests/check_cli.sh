@@ -395,7 +395,8 @@ check_status "twin --friction 0.25 --restitution 0.4 exits 0" 0 $? "$tmp/e"
 check_has "... and its summary reports mu 0.25" "$tmp/o" '"mu_final":0.25,'
 check_has "... as its estimates' mu column does" "$tmp/laws_est.csv" ',0.25,0'
 for bad in "--friction -0.1" "--restitution 1.5" "--estimate-friction -1" "--friction-time 0" \
-    "--friction-deadband -0.001" "--friction-sigma 0" "--friction-amplitude -1" "--friction-climb -0.001"; do
+    "--friction-deadband -0.001" "--friction-sigma 0" "--friction-amplitude -1" "--friction-climb -0.001" \
+    "--jump-hold -1"; do
     "$bin" twin configs/fig6.ini --measured "$tmp/short.csv" --out "$tmp/bad_est.csv" $bad >"$tmp/o" 2>"$tmp/e"
     check_status "twin $bad exits 2" 2 $? "$tmp/e"
     check_has "... naming the option and its range" "$tmp/e" "${bad%% *} ${bad#* }: allowed: a number in"

@@ -712,6 +712,57 @@ static void test_maps_follow_the_twins_friction(void **state)
     }
 }
 
+/* The jump hold: a plant whose response falls to 0.27 of itself at once
+ * (fig6's stiff branch from s = 0.33 to 0.233; a jump to the low branch
+ * falls to a few percent) at 1 s, the twin at 0.30. Without a hold the
+ * lock-in's second stages, still holding the old response, are read as an
+ * s between the two: 0.3 s after the fall the measured s is more than 0.01
+ * from 0.233. With jump_hold 1 s, s stays unmeasured (s_sigma 1) from 0.2 s
+ * to 1 s after the fall, and 3 s after it s is measured again, 0.233
+ * within 0.002 (with or without the hold). */
+static void test_a_falling_response_holds_the_s_correction(void **state)
+{
+    static const double hold[] = { 0.0, 1.0 };
+    const double s_from = 0.33, s_to = 0.233;
+    int i;
+    (void)state;
+    for (i = 0; i < 2; ++i) {
+        bs_observer_options options = bs_observer_defaults();
+        bs_observer_estimate e;
+        double held = 1.0, reading = 0.0;
+        long k;
+        start_synthetic(0.30);
+        options.correct_position = 0;
+        options.jump_hold = (bs_real)hold[i];
+        assert_int_equal(bs_sim_init(&twin, &scene, BS_MODEL_FREE, BS_R(0.30)), BS_OK);
+        assert_int_equal(bs_observer_init(&obs, &twin, &gains, &options), BS_OK);
+        for (k = 1; k <= lround(4.0 / (double)scene.dt); ++k) {
+            const double t = (double)k * (double)scene.dt;
+            synthetic_sample(k, t < 1.0 ? s_from : s_to, 0.30);
+            if (k % 16 != 0)
+                continue;
+            assert_int_equal(bs_observer_get(&obs, &e), BS_OK);
+            if (t >= 1.2 && t <= 2.0 && e.s_sigma < held)
+                held = (double)e.s_sigma;
+            if (t >= 1.3 && reading == 0.0) /* the first update from 1.3 s on */
+                reading = (double)e.s_sigma < 1.0 ? (double)(e.s + e.s_error) : -1.0;
+        }
+        assert_int_equal(bs_observer_get(&obs, &e), BS_OK);
+        print_message("response falling at 1 s, jump_hold %.0f s: s_sigma at least %.3g over [1.2, 2] s, measured s "
+                      "%.4f at 1.3 s (-1: not measured), %.4f at 4 s\n", hold[i], held, reading,
+                      (double)(e.s + e.s_error));
+        if (hold[i] > 0.0) {
+            assert_true(held >= 1.0);
+            assert_true(reading < 0.0);
+        } else {
+            assert_true(held < 1.0);
+            assert_true(reading > 0.0 && fabs(reading - s_to) > 0.01);
+        }
+        assert_true(e.s_sigma < 1.0); /* measured again (its spread still wide after the jump in s) */
+        assert_true(fabs((double)(e.s + e.s_error) - s_to) < 0.002);
+    }
+}
+
 /* The design: finite gains, each taking a part of the innovation in (0, 1)
  * at the sensor (C K of a Kalman filter), and a response map on both
  * branches around fig6's turning point. */
@@ -786,6 +837,7 @@ int main(void)
         cmocka_unit_test(test_measured_s_of_a_climbing_slider_is_not_behind),
         cmocka_unit_test(test_a_state_set_from_outside_is_no_drift),
         cmocka_unit_test(test_maps_follow_the_twins_friction),
+        cmocka_unit_test(test_a_falling_response_holds_the_s_correction),
         cmocka_unit_test(test_init_refuses_what_does_not_fit),
         cmocka_unit_test(test_nan_measurement_is_refused_without_change),
         cmocka_unit_test(test_outliers_are_skipped_counted_and_flagged),

@@ -138,12 +138,16 @@ typedef struct bs_observer_options {
     bs_real friction_climb;  /* ... and while the measured s moves at least this fast (the plant
                                 climbing the high branch; its rate low-passed over 1 s) [1/s],
                                 >= 0 */
+    bs_real jump_hold;       /* no s correction (and so no friction learning) for this long after
+                                the measured response starts falling fast (a jump to the low
+                                branch under way: the lock-in holds the old branch's response for
+                                ~10 lockin_time) [s], >= 0; 0: none */
 } bs_observer_options;
 
 /* Defaults (tuned on fig6, docs/twin.md): both corrections, lock-in 0.1 s,
  * gain 1 /s, rate 0.05 /s, deadband 0.004, hold above s_sigma 0.02,
  * excitation within 10 % (frequency 1 %), settle 0.5 s, outliers beyond
- * 6 times the innovation's RMS. */
+ * 6 times the innovation's RMS; no hold after a fall (jump_hold 0). */
 #define BS_OBSERVER_DEFAULT_LOCKIN_TIME 0.1
 #define BS_OBSERVER_DEFAULT_POSITION_GAIN 1.0
 #define BS_OBSERVER_DEFAULT_EXCITATION_TOLERANCE 0.1
@@ -158,6 +162,7 @@ typedef struct bs_observer_options {
 #define BS_OBSERVER_DEFAULT_FRICTION_SIGMA 0.002
 #define BS_OBSERVER_DEFAULT_FRICTION_AMPLITUDE 0.5
 #define BS_OBSERVER_DEFAULT_FRICTION_CLIMB 0.001
+#define BS_OBSERVER_DEFAULT_JUMP_HOLD 0.0
 /* The friction estimate stays within [1 - range, 1 + range] times the
  * scene's mu (twice the +-25 % a plant is drawn with in the twin report). */
 #define BS_OBSERVER_FRICTION_RANGE 0.5
@@ -207,6 +212,7 @@ typedef struct bs_observer {
     bs_lowpass2 defl_a, defl_b;                       /* <w a>, <w b>: the twin's w(4L/7) */
     bs_real innovation_sq;                            /* running mean of e^2, each clipped at the gate */
     uint64_t last_outlier;                            /* step of the last outlier (0: none) */
+    uint64_t hold_until;                              /* no s correction before this step (jump_hold) */
     int gain_interval;                                /* the gain schedule's interval of the last step
                                                          (-1: none yet) */
     bs_real gain_s_from, gain_s_to, gain_s_width;     /* its start, end and width in s (its start

@@ -65,6 +65,14 @@
  *    frequencies are off, the map is off too (3 % moves it by ~0.01 on
  *    fig6), and within that band the twin's own slider dynamics, driven by
  *    the corrected beam, are the better guide (docs/twin.md).
+ *    With jump_hold > 0, a response that falls fast (the lock-in's first
+ *    stages below FALLING of its second: a jump to the low branch under
+ *    way) leaves s unmeasured (s_sigma 1: no s correction, no friction
+ *    learning) for jump_hold seconds: the second stages hold the old
+ *    branch's response for about ten tau after such a fall (1 % of it
+ *    after 11 tau when it falls to 1/40), and on the low branch, where |H|
+ *    hardly changes with s, that reads as an s error of a few hundredths
+ *    (docs/twin.md, "Jump hold").
  *    (5 and 6 run every POSITION_EVERY steps.)
  * 6. Confidence. White measurement noise of standard deviation sigma_n
  *    (gains->noise) through the lock-in's two stages leaves
@@ -141,6 +149,9 @@
  * samples, 3 L/s at dt = 2e-5 s; the slider drifts at hundredths of L a
  * second) is a state set from outside the observer, not drift. */
 #define DRIFT_JUMP BS_R(0.001)
+/* 5: the first stages' response below this part of the second stages':
+ * the response falls fast (jump_hold) */
+#define FALLING BS_R(0.7)
 
 /* bs_lowpass2_pair_step moves a signal's two products as one block: with_b
  * right after with_a. */
@@ -175,6 +186,7 @@ bs_observer_options bs_observer_defaults(void)
     o.friction_sigma = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_SIGMA;
     o.friction_amplitude = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_AMPLITUDE;
     o.friction_climb = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_CLIMB;
+    o.jump_hold = (bs_real)BS_OBSERVER_DEFAULT_JUMP_HOLD;
     return o;
 }
 
@@ -196,7 +208,7 @@ static int valid_options(const bs_observer_options *o)
            && finite(o->friction_time) && o->friction_time > BS_R(0.0) && finite(o->friction_deadband)
            && o->friction_deadband >= BS_R(0.0) && finite(o->friction_sigma) && o->friction_sigma > BS_R(0.0)
            && finite(o->friction_amplitude) && o->friction_amplitude >= BS_R(0.0) && finite(o->friction_climb)
-           && o->friction_climb >= BS_R(0.0);
+           && o->friction_climb >= BS_R(0.0) && finite(o->jump_hold) && o->jump_hold >= BS_R(0.0);
 }
 
 /* Map m + 1 is made at map m's excitation (at another mu). */
@@ -362,6 +374,7 @@ bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer
     obs->options.friction_sigma = options->friction_sigma;
     obs->options.friction_amplitude = options->friction_amplitude;
     obs->options.friction_climb = options->friction_climb;
+    obs->options.jump_hold = options->jump_hold;
     obs->friction_persist = BS_R(0.0);
     obs->friction_learnt = BS_R(0.0);
     obs->climb_s = BS_R(-1.0);
@@ -392,6 +405,7 @@ bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer
     }
     obs->innovation_sq = BS_R(0.0);
     obs->last_outlier = 0;
+    obs->hold_until = 0;
     obs->gain_interval = -1;
     obs->gain_s_from = obs->gain_s_to = BS_R(0.0); /* kept by no s (gains_at) */
     bs_shape_forget(&obs->shape);
@@ -740,6 +754,21 @@ static int matching_map(const bs_observer *obs, bs_real frequency, bs_real ampli
     return -1;
 }
 
+/* 5: whether the measured response h (the lock-in's second stages) falls
+ * fast: the first stages' response below FALLING times h. A jump to the low
+ * branch shows so: its fall to ~1/40 puts the first stage far below the
+ * second within a few tau; in a climb on either branch |H| moves a few
+ * percent a second, and the stages differ by about tau times that (a few
+ * tenths of a percent), the low branch's rattle a few percent. */
+static int falling(const bs_lockin_basis *basis, const bs_lowpass2 *with_a, const bs_lowpass2 *with_b,
+                   complex_real h)
+{
+    const bs_real ya = with_a->stage[0], yb = with_b->stage[0];
+    const bs_real re = basis->in_phase * ya;
+    const bs_real im = -basis->quadrature * (yb - basis->projection * ya);
+    return re * re + im * im < FALLING * FALLING * (h.re * h.re + h.im * h.im);
+}
+
 /* 5: the twin's drift since the last update, ds, into drift_lag: its s less
  * s through the lock-in's first and second stage (bs_lowpass2_step over
  * POSITION_EVERY steps, the drift taken as even over them). */
@@ -786,7 +815,9 @@ static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
         est->phase_error = angle_of(ratio.im, ratio.re);
     }
     map = matching_map(obs, est->frequency, bs_sqrt(BS_R(2.0) * aa));
-    if (map < 0)
+    if (obs->options.jump_hold > BS_R(0.0) && falling(&basis, &obs->meas_a, &obs->meas_b, h_m))
+        obs->hold_until = obs->steps + (uint64_t)(obs->options.jump_hold / dt);
+    if (map < 0 || obs->steps < obs->hold_until)
         return;
     mirror = est->s > BS_R(0.5);
     s_near = mirror ? BS_R(1.0) - est->s : est->s;

@@ -35,7 +35,7 @@ const char cli_twin_synopsis[] =
     "        [--position-rate R] [--deadband D] [--outlier-gate K] [--score-after T] [--tolerance D]\n"
     "        [--map-frequencies F,F,...] [--map-frictions MU,MU,...] [--friction MU] [--restitution E]\n"
     "        [--estimate-friction K] [--friction-time T] [--friction-deadband D] [--friction-sigma S]\n"
-    "        [--friction-amplitude A] [--friction-climb R] [--set section.key=value ...]";
+    "        [--friction-amplitude A] [--friction-climb R] [--jump-hold T] [--set section.key=value ...]";
 const char cli_twin_help[] =
     "  the twin corrected from measured signals (docs/twin.md, \"Observer\")\n"
     "  Runs the scene on the measured base acceleration, corrected from the measured signal; EST.csv every N steps: t,\n"
@@ -54,7 +54,9 @@ const char cli_twin_help[] =
     "  (default 0.5 s) the persistent error's low-pass, --friction-deadband D (default 0.001) what of it\n"
     "  moves nothing; it learns while s_sigma is below --friction-sigma S (default 0.002) and the\n"
     "  amplitude above --friction-amplitude A beam thicknesses (default 0.5: the high branch), and\n"
-    "  only while the measured s moves at --friction-climb R [1/s] or faster (default 0.001: the climb).\n";
+    "  only while the measured s moves at --friction-climb R [1/s] or faster (default 0.001: the climb).\n"
+    "  --jump-hold T: no s correction for T seconds after the measured response starts falling fast (a jump\n"
+    "  to the low branch; default 0: none; docs/twin.md, \"Jump hold\").\n";
 
 const char cli_twin_plant_synopsis[] =
     "beamslider twin-plant SCENE.ini --out FILE.csv [--signal deflection|voltage] [--snr DB]\n"
@@ -98,7 +100,7 @@ typedef struct twin_cli {
     double lockin, position_gain, position_rate, position_deadband, outlier_gate;
     double score_after, tolerance;
     double mu, e_n, friction_gain; /* NAN: the scene's; 0: no estimate */
-    double friction_time, friction_deadband, friction_sigma, friction_amplitude, friction_climb;
+    double friction_time, friction_deadband, friction_sigma, friction_amplitude, friction_climb, jump_hold;
 } twin_cli;
 
 /* ---- options ---- */
@@ -154,6 +156,7 @@ static void cli_defaults(twin_cli *c)
     c->friction_sigma = BS_OBSERVER_DEFAULT_FRICTION_SIGMA;
     c->friction_amplitude = BS_OBSERVER_DEFAULT_FRICTION_AMPLITUDE;
     c->friction_climb = BS_OBSERVER_DEFAULT_FRICTION_CLIMB;
+    c->jump_hold = BS_OBSERVER_DEFAULT_JUMP_HOLD;
 }
 
 /* --map-frequencies F,F,... or --map-frictions MU,MU,...: 1 to
@@ -236,6 +239,7 @@ static int parse_valued(twin_cli *c, const char *option, const char *value)
     else if (!strcmp(option, "--friction-sigma")) return parse_number(option, value, 1e-6, 1.0, &c->friction_sigma);
     else if (!strcmp(option, "--friction-amplitude")) return parse_number(option, value, 0.0, 100.0, &c->friction_amplitude);
     else if (!strcmp(option, "--friction-climb")) return parse_number(option, value, 0.0, 1.0, &c->friction_climb);
+    else if (!strcmp(option, "--jump-hold")) return parse_number(option, value, 0.0, 1e3, &c->jump_hold);
     else if (!strcmp(option, "--bits") || !strcmp(option, "--every") || !strcmp(option, "--seed")) {
         if (parse_number(option, value, !strcmp(option, "--every") ? 1.0 : 0.0,
                          !strcmp(option, "--bits") ? 24.0 : 4e9, &x) != 0 || x != floor(x)) {
@@ -466,6 +470,7 @@ static twin_run_options run_options(const twin_cli *c)
     o.observer.friction_sigma = (bs_real)c->friction_sigma;
     o.observer.friction_amplitude = (bs_real)c->friction_amplitude;
     o.observer.friction_climb = (bs_real)c->friction_climb;
+    o.observer.jump_hold = (bs_real)c->jump_hold;
     o.mu = c->mu;
     o.e_n = c->e_n;
     return o;

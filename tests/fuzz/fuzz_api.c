@@ -567,7 +567,7 @@ static void op_observer_init(input *in)
     bs_observer_estimate estimate;
     edit_gains(in);
     if (how & 1) {
-        const unsigned field = take_byte(in) % 10;
+        const unsigned field = take_byte(in) % 11;
         switch (field) {
         case 0: options.correct_beam = take_int(in, options.correct_beam); break;
         case 1: options.correct_position = take_int(in, options.correct_position); break;
@@ -578,6 +578,7 @@ static void op_observer_init(input *in)
         case 6: options.sigma_hold = take_value(in, options.sigma_hold); break;
         case 7: options.excitation_tolerance = take_value(in, options.excitation_tolerance); break;
         case 8: options.settle_time = take_value(in, options.settle_time); break;
+        case 9: options.jump_hold = take_value(in, options.jump_hold); break;
         default: options.outlier_gate = take_value(in, options.outlier_gate); break;
         }
     }
