@@ -139,9 +139,10 @@ typedef struct bs_observer_options {
                                 climbing the high branch; its rate low-passed over 1 s) [1/s],
                                 >= 0 */
     bs_real jump_hold;       /* no s correction (and so no friction learning) for this long after
-                                the measured response starts falling fast (a jump to the low
-                                branch under way: the lock-in holds the old branch's response for
-                                ~10 lockin_time) [s], >= 0; 0: none */
+                                the measured response starts falling fast from the high branch
+                                (the twin's amplitude above h/2; a jump to the low branch under
+                                way: the lock-in holds the old branch's response for ~10
+                                lockin_time) [s], >= 0; 0: none */
 } bs_observer_options;
 
 /* Defaults (tuned on fig6, docs/twin.md): both corrections, lock-in 0.1 s,

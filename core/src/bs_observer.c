@@ -65,8 +65,9 @@
  *    frequencies are off, the map is off too (3 % moves it by ~0.01 on
  *    fig6), and within that band the twin's own slider dynamics, driven by
  *    the corrected beam, are the better guide (docs/twin.md).
- *    With jump_hold > 0, a response that falls fast (the lock-in's first
- *    stages below FALLING of its second: a jump to the low branch under
+ *    With jump_hold > 0, a response that falls fast from the high branch
+ *    (the lock-in's first stages below FALLING of its second while the
+ *    twin's w(4L/7) amplitude is above h/2: a jump to the low branch under
  *    way) leaves s unmeasured (s_sigma 1: no s correction, no friction
  *    learning) for jump_hold seconds: the second stages hold the old
  *    branch's response for about ten tau after such a fall (1 % of it
@@ -759,7 +760,8 @@ static int matching_map(const bs_observer *obs, bs_real frequency, bs_real ampli
  * branch shows so: its fall to ~1/40 puts the first stage far below the
  * second within a few tau; in a climb on either branch |H| moves a few
  * percent a second, and the stages differ by about tau times that (a few
- * tenths of a percent), the low branch's rattle a few percent. */
+ * tenths of a percent; the low branch's rattle near the clamp can fall as
+ * fast, which is why a fall counts only from the high branch (the caller). */
 static int falling(const bs_lockin_basis *basis, const bs_lowpass2 *with_a, const bs_lowpass2 *with_b,
                    complex_real h)
 {
@@ -815,7 +817,8 @@ static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
         est->phase_error = angle_of(ratio.im, ratio.re);
     }
     map = matching_map(obs, est->frequency, bs_sqrt(BS_R(2.0) * aa));
-    if (obs->options.jump_hold > BS_R(0.0) && falling(&basis, &obs->meas_a, &obs->meas_b, h_m))
+    if (obs->options.jump_hold > BS_R(0.0) && est->amplitude > sim->scene->half_thickness
+        && falling(&basis, &obs->meas_a, &obs->meas_b, h_m))
         obs->hold_until = obs->steps + (uint64_t)(obs->options.jump_hold / dt);
     if (map < 0 || obs->steps < obs->hold_until)
         return;
