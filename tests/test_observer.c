@@ -742,7 +742,7 @@ static void test_a_falling_response_holds_the_s_correction(void **state)
             if (k % 16 != 0)
                 continue;
             assert_int_equal(bs_observer_get(&obs, &e), BS_OK);
-            if (t >= 1.2 && t <= 2.0 && e.s_sigma < held)
+            if (t >= 1.2 && t <= 2.0 && (double)e.s_sigma < held)
                 held = (double)e.s_sigma;
             if (t >= 1.3 && reading == 0.0) /* the first update from 1.3 s on */
                 reading = (double)e.s_sigma < 1.0 ? (double)(e.s + e.s_error) : -1.0;
@@ -758,7 +758,7 @@ static void test_a_falling_response_holds_the_s_correction(void **state)
             assert_true(held < 1.0);
             assert_true(reading > 0.0 && fabs(reading - s_to) > 0.01);
         }
-        assert_true(e.s_sigma < 1.0); /* measured again (its spread still wide after the jump in s) */
+        assert_true((double)e.s_sigma < 1.0); /* measured again (its spread still wide after the jump in s) */
         assert_true(fabs((double)(e.s + e.s_error) - s_to) < 0.002);
     }
 }
