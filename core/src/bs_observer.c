@@ -153,6 +153,8 @@
 /* 5: the first stages' response below this part of the second stages':
  * the response falls fast (jump_hold) */
 #define FALLING BS_R(0.7)
+/* the longest jump hold in steps, 2^62 (a conversion of more is undefined) */
+#define HOLD_STEPS_MAX BS_R(4611686018427387904.0)
 
 /* bs_lowpass2_pair_step moves a signal's two products as one block: with_b
  * right after with_a. */
@@ -760,8 +762,8 @@ static int matching_map(const bs_observer *obs, bs_real frequency, bs_real ampli
  * branch shows so: its fall to ~1/40 puts the first stage far below the
  * second within a few tau; in a climb on either branch |H| moves a few
  * percent a second, and the stages differ by about tau times that (a few
- * tenths of a percent; the low branch's rattle near the clamp can fall as
- * fast, which is why a fall counts only from the high branch (the caller). */
+ * tenths of a percent). The low branch's rattle near fig6's clamp can fall
+ * as fast: the caller counts a fall only from the high branch. */
 static int falling(const bs_lockin_basis *basis, const bs_lowpass2 *with_a, const bs_lowpass2 *with_b,
                    complex_real h)
 {
@@ -818,8 +820,10 @@ static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
     }
     map = matching_map(obs, est->frequency, bs_sqrt(BS_R(2.0) * aa));
     if (obs->options.jump_hold > BS_R(0.0) && est->amplitude > sim->scene->half_thickness
-        && falling(&basis, &obs->meas_a, &obs->meas_b, h_m))
-        obs->hold_until = obs->steps + (uint64_t)(obs->options.jump_hold / dt);
+        && falling(&basis, &obs->meas_a, &obs->meas_b, h_m)) {
+        const bs_real steps = obs->options.jump_hold / dt; /* finite or +inf: saturated, not cast */
+        obs->hold_until = obs->steps + (steps < HOLD_STEPS_MAX ? (uint64_t)steps : (uint64_t)1 << 62);
+    }
     if (map < 0 || obs->steps < obs->hold_until)
         return;
     mirror = est->s > BS_R(0.5);
