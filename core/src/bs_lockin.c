@@ -91,10 +91,14 @@ int bs_lockin_basis_of(const bs_lockin_reference *r, bs_lockin_basis *basis)
     return 1;
 }
 
+void bs_lockin_response_of(const bs_lockin_basis *basis, bs_real ya, bs_real yb, bs_real *re, bs_real *im)
+{
+    *re = basis->in_phase * ya;
+    *im = -basis->quadrature * (yb - basis->projection * ya);
+}
+
 void bs_lockin_response(const bs_lockin_basis *basis, const bs_lowpass2 *with_a, const bs_lowpass2 *with_b,
                         bs_real *re, bs_real *im)
 {
-    const bs_real ya = bs_lowpass2_mean(with_a), yb = bs_lowpass2_mean(with_b);
-    *re = basis->in_phase * ya;
-    *im = -basis->quadrature * (yb - basis->projection * ya);
+    bs_lockin_response_of(basis, bs_lowpass2_mean(with_a), bs_lowpass2_mean(with_b), re, im);
 }

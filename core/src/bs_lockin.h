@@ -171,4 +171,8 @@ int bs_lockin_basis_of(const bs_lockin_reference *r, bs_lockin_basis *basis);
 void bs_lockin_response(const bs_lockin_basis *basis, const bs_lowpass2 *with_a, const bs_lowpass2 *with_b,
                         bs_real *re, bs_real *im);
 
+/* The same from the products' values ya (<y a>) and yb (<y b~>), of any
+ * stage (the observer's jump hold reads the first stages too). */
+void bs_lockin_response_of(const bs_lockin_basis *basis, bs_real ya, bs_real yb, bs_real *re, bs_real *im);
+
 #endif

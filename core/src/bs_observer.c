@@ -767,10 +767,9 @@ static int matching_map(const bs_observer *obs, bs_real frequency, bs_real ampli
 static int falling(const bs_lockin_basis *basis, const bs_lowpass2 *with_a, const bs_lowpass2 *with_b,
                    complex_real h)
 {
-    const bs_real ya = with_a->stage[0], yb = with_b->stage[0];
-    const bs_real re = basis->in_phase * ya;
-    const bs_real im = -basis->quadrature * (yb - basis->projection * ya);
-    return re * re + im * im < FALLING * FALLING * (h.re * h.re + h.im * h.im);
+    complex_real first;
+    bs_lockin_response_of(basis, with_a->stage[0], with_b->stage[0], &first.re, &first.im);
+    return first.re * first.re + first.im * first.im < FALLING * FALLING * (h.re * h.re + h.im * h.im);
 }
 
 /* 5: the twin's drift since the last update, ds, into drift_lag: its s less
@@ -822,7 +821,7 @@ static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
     if (obs->options.jump_hold > BS_R(0.0) && est->amplitude > sim->scene->half_thickness
         && falling(&basis, &obs->meas_a, &obs->meas_b, h_m)) {
         const bs_real steps = obs->options.jump_hold / dt; /* finite or +inf: saturated, not cast */
-        obs->hold_until = obs->steps + (steps < HOLD_STEPS_MAX ? (uint64_t)steps : (uint64_t)1 << 62);
+        obs->hold_until = obs->steps + (uint64_t)(steps < HOLD_STEPS_MAX ? steps : HOLD_STEPS_MAX);
     }
     if (map < 0 || obs->steps < obs->hold_until)
         return;
