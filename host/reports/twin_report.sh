@@ -34,10 +34,12 @@ REF=${REF:-build/bs-reference}
 BIN=${BIN:-build/double/beamslider}
 # The commissioned twin's map is off by what is left of its frequency error
 # (~0.2 %, ~0.001 in s), not the ~0.01 the default deadband allows for: it
-# corrects s beyond 0.001, at 3 /s (docs/twin.md, "Commissioning"). The
+# corrects s beyond 0.001, at 3 /s (docs/twin.md, "Commissioning"), and holds
+# the s correction for 2 s over a fall from the high branch, whose remnant in
+# the lock-in the low branch's map misreads (docs/twin.md, "Jump hold"). The
 # corrected twin runs the observer's defaults. Either can be changed (e.g.
 # COMMISSIONED= for the defaults) to compare one plant (--plant) both ways.
-COMMISSIONED=${COMMISSIONED-"--deadband 0.001 --position-gain 3"}
+COMMISSIONED=${COMMISSIONED-"--deadband 0.001 --position-gain 3 --jump-hold 2"}
 CORRECTED=${CORRECTED-}
 # Two more twins, both commissioned as above: "ceiling", told the plant's
 # true mu and e_N (bs_sim_set_contact_laws: the best a friction estimate can
@@ -526,7 +528,7 @@ ratio of the measured voltage to the measured deflection in the decay; it is
 then corrected like the second, but with the map trusted to what is left of
 its frequency error (\`$COMMISSIONED\`: an s error beyond 0.001 corrected
 at 3 /s, where the defaults leave 0.004 at 1 /s for a model that may be 3 %
-off). The identified sqrt(E_twin / E) misses the
+off; no s correction for 2 s over a fall from the high branch, "Jump hold"). The identified sqrt(E_twin / E) misses the
 plant's drawn 1 + d_f by
 $(echo "$x_stats" | awk '{ printf "%.4f on average, %.4f at most (%d plants)", $1, $2, $3 }'),
 the identified coupling scale its drawn 1 + d_c by
