@@ -39,7 +39,8 @@ BIN=${BIN:-build/double/beamslider}
 # the lock-in the low branch's map misreads (docs/twin.md, "Jump hold"). The
 # corrected twin runs the observer's defaults. Either can be changed (e.g.
 # COMMISSIONED= for the defaults) to compare one plant (--plant) both ways.
-COMMISSIONED=${COMMISSIONED-"--deadband 0.001 --position-gain 3 --jump-hold 2"}
+COMMISSIONED_DEFAULT="--deadband 0.001 --position-gain 3 --jump-hold 2"
+COMMISSIONED=${COMMISSIONED-$COMMISSIONED_DEFAULT}
 CORRECTED=${CORRECTED-}
 # Two more twins, both commissioned as above: "ceiling", told the plant's
 # true mu and e_N (bs_sim_set_contact_laws: the best a friction estimate can
@@ -174,18 +175,50 @@ commission() { # commission DIR SEED LOAD: prints "E_twin f_plant coupling_twin 
     printf '%s %s %s %s' "$e2" "$fp" "$theta" "$amp"
 }
 
+# twins W: the twins of plant() (its variables) on the measured signals and
+# the twin scenes in W, into TMP/NAME_SEED.*
+twins() {
+    w=$1
+    noise=$(sed -n 's/^# noise = \([^ ]*\).*/\1/p' "$w/measured.csv")
+    "$BIN" twin "$w/twin.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.est" --s0 0.35 --every 50 \
+        --noise "$noise" $CORRECTED > "$tmp/${name}_$seed.json"
+    "$BIN" twin "$w/twin.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.open" --s0 0.35 --every 50 \
+        --noise "$noise" --open-loop > "$tmp/${name}_$seed.open.json"
+    "$BIN" twin "$w/twin_c.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.comm" --s0 0.35 --every 50 \
+        --noise "$noise" $COMMISSIONED > "$tmp/${name}_$seed.comm.json"
+    "$BIN" twin "$w/twin_c.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.ceil" --s0 0.35 --every 50 \
+        --noise "$noise" $COMMISSIONED ${MAP_FRICTIONS:+--map-frictions "$MAP_FRICTIONS"} --friction "$mu_p" \
+        --restitution "$en_p" > "$tmp/${name}_$seed.ceil.json"
+    "$BIN" twin "$w/twin_c.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.mu" --s0 0.35 --every 50 \
+        --noise "$noise" $COMMISSIONED ${MAP_FRICTIONS:+--map-frictions "$MAP_FRICTIONS"} \
+        --estimate-friction "$FRICTION_GAIN" > "$tmp/${name}_$seed.mu.json"
+    if [ "${CEILING_MAPS:-0}" = 1 ]; then # the ceiling with its maps designed at the plant's mu and e_N too
+        { cat "$w/twin_c.ini"; printf '[contact]\nfriction = %s\nrestitution = %s\n' "$mu_p" "$en_p"; } > "$w/twin_m.ini"
+        "$BIN" twin "$w/twin_m.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.maps" --s0 0.35 --every 50 \
+            --noise "$noise" $COMMISSIONED > "$tmp/${name}_$seed.maps.json"
+    fi
+}
+
 # ---- one plant: plant NAME SCENE T_END LOAD SEED TMP F0 A0 -----------------------
 # writes TMP/NAME_SEED.{json,est,open,ref} (summaries, twin estimates every
 # 50 steps, open-loop estimates, the plant's s and power every 50 steps)
 plant() {
     name=$1 scene=$2 t_end=$3 load=$4 seed=$5 tmp=$6 f0=$7 a0=$8
     w=$tmp/w_${name}_$seed
+    signals=$tmp/signals/${name}_$seed
     mkdir -p "$w"
     awk -v seed="$seed" -v E="$E" -v MU="$MU" -v EN="$EN" -v TH="$THETA" 'BEGIN {
         srand(seed); df = 0.06 * rand() - 0.03; dm = 0.5 * rand() - 0.25; de = 0.4 * rand() - 0.2; dc = 0.2 * rand() - 0.1
         printf "%.6f %.6f %.6f %.6f %.9g %.9g %.9g %.9g\n", df, dm, de, dc, E * (1 + df) ^ 2, MU * (1 + dm), EN * (1 + de), TH * (1 + dc)
     }' > "$w/draw"
     read -r df dm de dc e_p mu_p en_p th_p < "$w/draw"
+    if [ "${TWIN_REPORT_SIGNALS:-0}" = 1 ] && [ -s "$signals/measured.csv" ] && [ -s "$tmp/${name}_$seed.draw" ]; then
+        # the plant's signals and commissioned scenes kept by an earlier run
+        # (its .ref, .amp and .draw are there too): only the twins run
+        rm -rf "$w"
+        twins "$signals"
+        return
+    fi
     {
         printf '[scene]\nbase = %s/configs/%s.ini\n[beam]\nyoungs_modulus = %s\n' "$here" "$scene" "$e_p"
         printf '[contact]\nfriction = %s\nrestitution = %s\n' "$mu_p" "$en_p"
@@ -227,30 +260,18 @@ plant() {
     awk -v seed="$((seed + 1000))" -v stats="$stats" -v scene="$here/configs/$scene.ini" -v schedule="$(schedule_of "$scene")" \
         -v f0="$f0" -v a0="$a0" -v dt="$TWIN_DT" -f host/reports/twin_signals.awk \
         "$w/plant.dat" > "$w/measured.csv"
-    noise=$(sed -n 's/^# noise = \([^ ]*\).*/\1/p' "$w/measured.csv")
-    "$BIN" twin "$w/twin.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.est" --s0 0.35 --every 50 \
-        --noise "$noise" $CORRECTED > "$tmp/${name}_$seed.json"
-    "$BIN" twin "$w/twin.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.open" --s0 0.35 --every 50 \
-        --noise "$noise" --open-loop > "$tmp/${name}_$seed.open.json"
-    "$BIN" twin "$w/twin_c.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.comm" --s0 0.35 --every 50 \
-        --noise "$noise" $COMMISSIONED > "$tmp/${name}_$seed.comm.json"
-    "$BIN" twin "$w/twin_c.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.ceil" --s0 0.35 --every 50 \
-        --noise "$noise" $COMMISSIONED ${MAP_FRICTIONS:+--map-frictions "$MAP_FRICTIONS"} --friction "$mu_p" \
-        --restitution "$en_p" > "$tmp/${name}_$seed.ceil.json"
-    "$BIN" twin "$w/twin_c.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.mu" --s0 0.35 --every 50 \
-        --noise "$noise" $COMMISSIONED ${MAP_FRICTIONS:+--map-frictions "$MAP_FRICTIONS"} \
-        --estimate-friction "$FRICTION_GAIN" > "$tmp/${name}_$seed.mu.json"
-    if [ "${CEILING_MAPS:-0}" = 1 ]; then # the ceiling with its maps designed at the plant's mu and e_N too
-        { cat "$w/twin_c.ini"; printf '[contact]\nfriction = %s\nrestitution = %s\n' "$mu_p" "$en_p"; } > "$w/twin_m.ini"
-        "$BIN" twin "$w/twin_m.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.maps" --s0 0.35 --every 50 \
-            --noise "$noise" $COMMISSIONED > "$tmp/${name}_$seed.maps.json"
-    fi
+    twins "$w"
     awk 'NR % 50 == 0 { print $1, $3, $4 }' "$w/plant.dat" > "$tmp/${name}_$seed.ref"
     # the plant's amplitude of w(4L/7): half its peak-to-peak over 0.1 s windows
     awk '{ k = int($1 * 10); if (k != last) { if (n) print (last + 0.5) / 10, (hi - lo) / 2; last = k; hi = $2; lo = $2; n = 0 }
            if ($2 > hi) hi = $2; if ($2 < lo) lo = $2; n++ }' "$w/plant.dat" > "$tmp/${name}_$seed.amp"
     printf '%s %s %s %s %s %s %s %s %s\n' "$seed" "$df" "$dm" "$de" "$dc" "$scale" "$th_scale" "$burst_amp" "$mu_p" \
         > "$tmp/${name}_$seed.draw"
+    if [ "${TWIN_REPORT_SIGNALS:-0}" = 1 ]; then
+        mkdir -p "$signals"
+        mv "$w/twin.ini" "$w/twin_c.ini" "$signals/"
+        mv "$w/measured.csv" "$signals/" # last: its presence says the rest is there
+    fi
     rm -rf "$w"
 }
 
@@ -267,7 +288,14 @@ fi
 
 # TWIN_REPORT_DIR=DIR keeps the plants' files in DIR (created if need be);
 # with TWIN_REPORT_REUSE=1 too, the plants already there are not run again
-# (the tables and figures are made anew from them)
+# (the tables and figures are made anew from them). With
+# TWIN_REPORT_SIGNALS=1 too, each plant's measured signals and twin scenes
+# (its commissioning) are kept in DIR/signals/NAME_SEED (150-280 MB a plant,
+# 15 GB for 72), and a plant whose signals are there runs only its twins
+# from them: for a change on the twins' side (the observer, BIN, the twins'
+# options), about a third of the time (fig8 plant 9: 104 s in full, 34 s for
+# its twins). A change of the plant, the signals or the commissioning needs
+# them made again (remove DIR/signals).
 . host/reports/twin_rows.sh
 work_dir
 # the section's and the figures' stamp (host/reports/provenance.sh), naming the knobs
@@ -526,9 +554,10 @@ decay, whose frequency the twin's Young's modulus is set to match (two secant
 steps on the twin's own model), and with a transducer the coupling from the
 ratio of the measured voltage to the measured deflection in the decay; it is
 then corrected like the second, but with the map trusted to what is left of
-its frequency error (\`$COMMISSIONED\`: an s error beyond 0.001 corrected
-at 3 /s, where the defaults leave 0.004 at 1 /s for a model that may be 3 %
-off; no s correction for 2 s over a fall from the high branch, "Jump hold"). The identified sqrt(E_twin / E) misses the
+its frequency error (\`$COMMISSIONED\`$(if [ "$COMMISSIONED" = "$COMMISSIONED_DEFAULT" ]; then
+printf '%s\n' ': an s error beyond 0.001 corrected' 'at 3 /s, where the defaults leave 0.004 at 1 /s for a model that may be 3 %'
+printf '%s' 'off; no s correction for 2 s over a fall from the high branch, "Jump hold"'
+else printf ', not the report'"'"'s `%s`' "$COMMISSIONED_DEFAULT"; fi)). The identified sqrt(E_twin / E) misses the
 plant's drawn 1 + d_f by
 $(echo "$x_stats" | awk '{ printf "%.4f on average, %.4f at most (%d plants)", $1, $2, $3 }'),
 the identified coupling scale its drawn 1 + d_c by
