@@ -15,7 +15,9 @@
 # 0.005 for the commissioned twin, the ceiling and the ceiling with the maps.
 #
 #   PLANTS=12 (default) OUT=docs/twin.md JOBS=$(nproc)
-#   TWIN_REPORT_DIR=DIR keeps the plants' files (TWIN_REPORT_REUSE=1: not run again)
+#   TWIN_REPORT_DIR=DIR keeps the plants' files (TWIN_REPORT_REUSE=1: not run again;
+#   TWIN_REPORT_SIGNALS=1: their signals kept, and only their twins run again where
+#   they are, twin_report.sh)
 set -eu
 OUT=${OUT:-docs/twin.md}
 PLANTS=${PLANTS:-12}

@@ -17,7 +17,9 @@
 #
 #   PLANTS=12 FAST_DT=3.125e-5 OUT=docs/twin.md JOBS=$(nproc)
 #   TWIN_REPORT_DIR=DIR keeps the files (DIR/dt2e-5, DIR/dtFAST_DT);
-#   TWIN_REPORT_REUSE=1: the plants already there are not run again
+#   TWIN_REPORT_REUSE=1: the plants already there are not run again;
+#   TWIN_REPORT_SIGNALS=1: their signals kept, and only their twins run again
+#   where they are (twin_report.sh)
 set -eu
 OUT=${OUT:-docs/twin.md}
 PLANTS=${PLANTS:-12}

@@ -20,7 +20,8 @@ work_dir() {
 # run_plants SCENE DIR SUFFIX [NAME=VALUE...]: the twin report's first PLANTS
 # plants of SCENE (fig6 or fig8: its draws, seed = plant number) closed loop into
 # DIR, JOBS at a time (twin_report.sh --plant with the environment NAME=VALUE...,
-# e.g. TWIN_DT); with TWIN_REPORT_REUSE=1 a plant whose DIR/SCENE_K.SUFFIX is there
+# e.g. TWIN_DT, and TWIN_REPORT_SIGNALS from the environment); with
+# TWIN_REPORT_REUSE=1 a plant whose DIR/SCENE_K.SUFFIX is there
 # is not run again
 run_plants() {
     case $1 in

@@ -21,7 +21,9 @@
 #
 #   PLANTS=12 MUS="0.18 0.20 0.22 0.24 0.25" OUT=docs/twin.md JOBS=$(nproc)
 #   TWIN_REPORT_DIR=DIR keeps the files (DIR/dt2e-5, DIR/dt1e-5, DIR/climb);
-#   TWIN_REPORT_REUSE=1: the plants already there are not run again
+#   TWIN_REPORT_REUSE=1: the plants already there are not run again;
+#   TWIN_REPORT_SIGNALS=1: their signals kept, and only their twins run again
+#   where they are (twin_report.sh)
 set -eu
 OUT=${OUT:-docs/twin.md}
 PLANTS=${PLANTS:-12}
