@@ -35,11 +35,11 @@ BIN=${BIN:-build/double/beamslider}
 # The commissioned twin's map is off by what is left of its frequency error
 # (~0.2 %, ~0.001 in s), not the ~0.01 the default deadband allows for: it
 # corrects s beyond 0.001, at 3 /s (docs/twin.md, "Commissioning"), and holds
-# the s correction for 2 s over a fall from the high branch, whose remnant in
+# the s correction for 5 s over a fall from the high branch, whose remnant in
 # the lock-in the low branch's map misreads (docs/twin.md, "Jump hold"). The
 # corrected twin runs the observer's defaults. Either can be changed (e.g.
 # COMMISSIONED= for the defaults) to compare one plant (--plant) both ways.
-COMMISSIONED_DEFAULT="--deadband 0.001 --position-gain 3 --jump-hold 2"
+COMMISSIONED_DEFAULT="--deadband 0.001 --position-gain 3 --jump-hold 5"
 COMMISSIONED=${COMMISSIONED-$COMMISSIONED_DEFAULT}
 CORRECTED=${CORRECTED-}
 # Two more twins, both commissioned as above: "ceiling", told the plant's
@@ -536,7 +536,7 @@ version=$("$BIN" --version | head -1)
 if [ "$COMMISSIONED" = "$COMMISSIONED_DEFAULT" ]; then
     commissioned_why=': an s error beyond 0.001 corrected
 at 3 /s, where the defaults leave 0.004 at 1 /s for a model that may be 3 %
-off; no s correction for 2 s over a fall from the high branch, "Jump hold"'
+off; no s correction for 5 s over a fall from the high branch, "Jump hold"'
 else
     commissioned_why=", not the report's \`$COMMISSIONED_DEFAULT\`"
 fi
