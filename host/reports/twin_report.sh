@@ -199,6 +199,12 @@ twins() {
     fi
 }
 
+# kept_signals DIR NAME SEED: true when an earlier run kept the plant's measured
+# signals and commissioned scenes (and its .draw, .ref, .amp): only its twins run
+kept_signals() {
+    [ -s "$1/signals/$2_$3/measured.csv" ] && [ -s "$1/$2_$3.draw" ]
+}
+
 # ---- one plant: plant NAME SCENE T_END LOAD SEED TMP F0 A0 -----------------------
 # writes TMP/NAME_SEED.{json,est,open,ref} (summaries, twin estimates every
 # 50 steps, open-loop estimates, the plant's s and power every 50 steps)
@@ -212,7 +218,7 @@ plant() {
         printf "%.6f %.6f %.6f %.6f %.9g %.9g %.9g %.9g\n", df, dm, de, dc, E * (1 + df) ^ 2, MU * (1 + dm), EN * (1 + de), TH * (1 + dc)
     }' > "$w/draw"
     read -r df dm de dc e_p mu_p en_p th_p < "$w/draw"
-    if [ "${TWIN_REPORT_SIGNALS:-0}" = 1 ] && [ -s "$signals/measured.csv" ] && [ -s "$tmp/${name}_$seed.draw" ]; then
+    if [ "${TWIN_REPORT_SIGNALS:-0}" = 1 ] && kept_signals "$tmp" "$name" "$seed"; then
         # the plant's signals and commissioned scenes kept by an earlier run
         # (its .ref, .amp and .draw are there too): only the twins run
         rm -rf "$w"
@@ -323,7 +329,7 @@ if [ -s "$TMP/cases" ]; then
     kept=0
     if [ "${TWIN_REPORT_SIGNALS:-0}" = 1 ]; then
         kept=$(while read -r name _ _ _ k _; do
-                   [ ! -s "$TMP/signals/${name}_$k/measured.csv" ] || [ ! -s "$TMP/${name}_$k.draw" ] || echo
+                   ! kept_signals "$TMP" "$name" "$k" || echo
                done < "$TMP/cases" | wc -l)
     fi
     xargs -P "$JOBS" -L 1 sh host/reports/twin_report.sh --plant < "$TMP/cases"
