@@ -47,10 +47,13 @@ CORRECTED=${CORRECTED-}
 # do), and "estimating", which estimates mu as it runs (docs/twin.md,
 # "Friction"; --estimate-friction at this gain).
 FRICTION_GAIN=${FRICTION_GAIN:-50}
-# MAP_FRICTIONS=0.15,0.2,0.25: both with response maps made at these mu,
-# which the observer interpolates at the twin's mu (--map-frictions;
-# docs/twin.md "Friction", "Maps that follow mu"); by default the scene's maps.
-MAP_FRICTIONS=${MAP_FRICTIONS-}
+# Both have response maps made at MAP_FRICTIONS, which the observer
+# interpolates at the twin's mu (--map-frictions; docs/twin.md "Friction",
+# "Maps that follow mu"): by default the scene's mu and 25 % either side, the
+# span the plants' mu is drawn from; MAP_FRICTIONS= gives them the scene's
+# maps at its mu, as the other twins.
+MAP_FRICTIONS_DEFAULT=0.15,0.2,0.25
+MAP_FRICTIONS=${MAP_FRICTIONS-$MAP_FRICTIONS_DEFAULT}
 # The closed loop's step [s]: the twin's, the plant's outer step (its inner
 # step stays 5e-6 s) and the measured signals' sample period (2e-5 s, the
 # scenes'; 1e-5 s: "The twin's step under friction", docs/twin.md)
@@ -307,7 +310,7 @@ work_dir
 # the section's and the figures' stamp (host/reports/provenance.sh), naming the knobs
 # that differ from the defaults
 . host/reports/provenance.sh
-stamp=$(provenance_stamp "make twin-report$( [ "$PLANTS" = 32 ] || printf ' PLANTS=%s' "$PLANTS")$( [ "$PLANTS_OTHER" = 8 ] || printf ' PLANTS_OTHER=%s' "$PLANTS_OTHER")$( [ "$PLANTS_SHIFT" = "$PLANTS_OTHER" ] || printf ' PLANTS_SHIFT=%s' "$PLANTS_SHIFT")$( [ -z "$MAP_FRICTIONS" ] || printf ' MAP_FRICTIONS=%s' "$MAP_FRICTIONS")")
+stamp=$(provenance_stamp "make twin-report$( [ "$PLANTS" = 32 ] || printf ' PLANTS=%s' "$PLANTS")$( [ "$PLANTS_OTHER" = 8 ] || printf ' PLANTS_OTHER=%s' "$PLANTS_OTHER")$( [ "$PLANTS_SHIFT" = "$PLANTS_OTHER" ] || printf ' PLANTS_SHIFT=%s' "$PLANTS_SHIFT")$( [ "$MAP_FRICTIONS" = "$MAP_FRICTIONS_DEFAULT" ] || printf ' MAP_FRICTIONS=%s' "$MAP_FRICTIONS")")
 # name scene t_end load f0 a0 plants
 cat > "$TMP/scenes" <<EOF
 fig6 fig6 60 71e3 124 14 $PLANTS

@@ -35,11 +35,12 @@ typedef struct observer_design_options {
 } observer_design_options;
 
 /* The response maps may take at most this many steps of simulation in all
- * (about a minute on a PC): a map costs 2 x 48 x (hold + record) excitation
+ * (a minute or two on a PC): a map costs 2 x 48 x (hold + record) excitation
  * periods, and a period 1 / (f dt) steps, so maps at low frequencies cost
- * the most (1 Hz at dt = 2e-5 s: 4.8e8 steps). observer_design refuses more,
+ * the most (1 Hz at dt = 2e-5 s: 8.4e8 steps). fig6_shift's eight
+ * frequencies at three frictions need 3.45e8. observer_design refuses more,
  * with the estimate. */
-#define OBSERVER_DESIGN_MAX_STEPS 2e8
+#define OBSERVER_DESIGN_MAX_STEPS 4e8
 
 /* Map frequencies are spaced by at most this ratio, so that every frequency
  * between the first and the last is within 1 % of one (the observer's
@@ -47,13 +48,15 @@ typedef struct observer_design_options {
 #define OBSERVER_MAP_SPACING 1.02
 
 /* Defaults (observer_design_defaults): deflection, no latency, no
- * acceleration noise, force noise OBSERVER_DEFAULT_FORCE_NOISE, map 150 + 40
+ * acceleration noise, force noise OBSERVER_DEFAULT_FORCE_NOISE, map 150 + 200
  * periods per point (the high branch settles over ~140 periods after a step
- * of s: docs/twin.md, "Observer" 4), maps from the scene; noise has no
- * default (the caller states it). */
+ * of s: docs/twin.md, "Observer" 4; where the slider rattles, the first
+ * harmonic over 40 periods scatters by ~2 % from point to point, over 200 by
+ * ~1 %: "Quieter maps"), maps from the scene; noise has no default (the
+ * caller states it). */
 #define OBSERVER_DEFAULT_FORCE_NOISE 1e-3
 #define OBSERVER_DEFAULT_MAP_HOLD 150
-#define OBSERVER_DEFAULT_MAP_RECORD 40
+#define OBSERVER_DEFAULT_MAP_RECORD 200
 
 /* The defaults, with noise as given. */
 observer_design_options observer_design_defaults(double noise);
