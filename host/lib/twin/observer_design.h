@@ -35,11 +35,11 @@ typedef struct observer_design_options {
 } observer_design_options;
 
 /* The response maps may take at most this many steps of simulation in all
- * (a minute or two on a PC): a map costs 2 x 48 x (hold + record) excitation
- * periods, and a period 1 / (f dt) steps, so maps at low frequencies cost
- * the most (1 Hz at dt = 2e-5 s: 8.4e8 steps). fig6_shift's eight
- * frequencies at three frictions need 3.45e8. observer_design refuses more,
- * with the estimate. */
+ * (under half a minute on a PC: fig6_shift's eight frequencies at three
+ * frictions, 3.45e8 steps, take 15 CPU seconds): a map costs 2 x 48 x (hold
+ * + record) excitation periods, and a period 1 / (f dt) steps, so maps at
+ * low frequencies cost the most (one at 1 Hz with dt = 2e-5 s: 1.7e9 steps).
+ * observer_design refuses more, with the estimate. */
 #define OBSERVER_DESIGN_MAX_STEPS 4e8
 
 /* Map frequencies are spaced by at most this ratio, so that every frequency
