@@ -9,4 +9,5 @@ static const char *const vg_too_long[] = {
     "test_friction_does_not_chase_noise_on_the_high_branch",
 };
 #include "vg_subset.h"
+#include "vg_short_maps.h"
 #include "../test_friction.c"

@@ -10,4 +10,5 @@ static const char *const vg_too_long[] = {
     "test_beam_correction_follows_the_gain_schedule",
 };
 #include "vg_subset.h"
+#include "vg_short_maps.h"
 #include "../test_observer.c"
