@@ -136,6 +136,18 @@ model_frequency() { # model_frequency DIR E: the twin's decay frequency with You
     model_decay "$1" "$2"
     awk -F, 'NR > 1 { print $1, $2 }' "$1/twin_decay.csv" | decay_frequency 1
 }
+# plant_libm: the C library's sin, cos and exp as the plant's reference runs them
+# on this machine: glibc on x86-64 takes versions of them compiled with fused
+# multiply-add where the CPU has FMA and AVX2 (unless GLIBC_TUNABLES masks
+# them), whose results differ from the others' in the last bit, and the
+# rattling slider makes of that another trajectory: a plant is the same bit for
+# bit only where the same versions run ("fma", "no-fma", or the machine's name)
+plant_libm() {
+    [ "$(uname -m)" = x86_64 ] || { uname -m; return; }
+    case ${GLIBC_TUNABLES:-} in *-FMA*|*-AVX2*) echo no-fma; return ;; esac
+    if grep -qw fma /proc/cpuinfo && grep -qw avx2 /proc/cpuinfo; then echo fma; else echo no-fma; fi
+}
+
 commission() { # commission DIR SEED LOAD: prints "E_twin f_plant coupling_twin burst" (plant.ini and twin.ini in DIR)
     # the scenes without their schedule: the burst is the whole excitation
     for f in plant twin; do
@@ -276,6 +288,7 @@ plant() {
            if ($2 > hi) hi = $2; if ($2 < lo) lo = $2; n++ }' "$w/plant.dat" > "$tmp/${name}_$seed.amp"
     printf '%s %s %s %s %s %s %s %s %s\n' "$seed" "$df" "$dm" "$de" "$dc" "$scale" "$th_scale" "$burst_amp" "$mu_p" \
         > "$tmp/${name}_$seed.draw"
+    plant_libm > "$tmp/${name}_$seed.libm"
     if [ "${TWIN_REPORT_SIGNALS:-0}" = 1 ]; then
         mkdir -p "$signals"
         mv "$w/twin.ini" "$w/twin_c.ini" "$signals/"
@@ -451,6 +464,9 @@ x_stats=$(cat "$TMP"/*.draw | awk '{ e = $6 - (1 + $2); if (e < 0) e = -e; s += 
     END { printf "%.4f %.4f %d", s / n, m, n }')
 # the bursts repeated (the first decay failed its check) and the commissionings that failed
 b_stats=$(cat "$TMP"/*.draw | awk '{ n++; if ($8 != 2) r++; if ($8 == 0) f++ } END { printf "%d %d %d", n, r, f }')
+# the versions of sin, cos and exp each plant's reference ran with (plant_libm)
+libm_stats=$(for d in "$TMP"/*.draw; do cat "${d%.draw}.libm" 2>/dev/null || echo unrecorded; done | sort | uniq -c |
+    awk '{ printf "%s%s: %d plants", (NR > 1 ? ", " : ""), $2, $1 }')
 # and its coupling scale against the drawn coupling error (the plants with a transducer)
 c_stats=$(cat "$TMP"/fig6_*.draw | awk '{ e = $7 - (1 + $5); if (e < 0) e = -e; s += e; if (e > m) m = e; n++ }
     END { printf "%.4f %.4f %d", s / n, m, n }')
@@ -569,7 +585,12 @@ not edit by hand. $PLANTS + $PLANTS_OTHER + $PLANTS_SHIFT plants, $wall_of.
 **Plant**: the independent double reference (tests/reference, its own code, not
 the twin's) at dt = 5e-6 s, with parameters drawn per plant uniformly within:
 modal frequencies +-3 % (Young's modulus), friction +-25 %, restitution +-20 %,
-piezo coupling +-10 %. **Signals**: the mean base acceleration of each 2e-5 s
+piezo coupling +-10 %. The reference calls the C library's sin, cos and exp,
+which glibc on x86-64 runs compiled with fused multiply-add where the CPU has
+FMA and AVX2; their last bits differ from the other versions', and the rattling
+slider makes of that another plant, so these plants are made again bit for bit
+only where the same versions run (fma: with fused multiply-add; $libm_stats).
+**Signals**: the mean base acceleration of each 2e-5 s
 step and w(4L/7) at its end, each with white Gaussian noise 40 dB below its RMS
 and 12-bit quantisation over +-2x its largest value
 (host/reports/twin_signals.awk). **Twin**: \`beamslider twin\` (double) on the
