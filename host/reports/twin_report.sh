@@ -466,7 +466,7 @@ x_stats=$(cat "$TMP"/*.draw | awk '{ e = $6 - (1 + $2); if (e < 0) e = -e; s += 
 b_stats=$(cat "$TMP"/*.draw | awk '{ n++; if ($8 != 2) r++; if ($8 == 0) f++ } END { printf "%d %d %d", n, r, f }')
 # the versions of sin, cos and exp each plant's reference ran with (plant_libm)
 libm_stats=$(for d in "$TMP"/*.draw; do cat "${d%.draw}.libm" 2>/dev/null || echo unrecorded; done | sort | uniq -c |
-    awk '{ printf "%s%s: %d plants", (NR > 1 ? ", " : ""), $2, $1 }')
+    awk '{ printf "%s%d plants with %s", (NR > 1 ? ", " : ""), $1, $2 }')
 # and its coupling scale against the drawn coupling error (the plants with a transducer)
 c_stats=$(cat "$TMP"/fig6_*.draw | awk '{ e = $7 - (1 + $5); if (e < 0) e = -e; s += e; if (e > m) m = e; n++ }
     END { printf "%.4f %.4f %d", s / n, m, n }')
@@ -589,7 +589,8 @@ piezo coupling +-10 %. The reference calls the C library's sin, cos and exp,
 which glibc on x86-64 runs compiled with fused multiply-add where the CPU has
 FMA and AVX2; their last bits differ from the other versions', and the rattling
 slider makes of that another plant, so these plants are made again bit for bit
-only where the same versions run (fma: with fused multiply-add; $libm_stats).
+only where the same versions run (here: $libm_stats; fma: the versions with
+fused multiply-add, no-fma: the others).
 **Signals**: the mean base acceleration of each 2e-5 s
 step and w(4L/7) at its end, each with white Gaussian noise 40 dB below its RMS
 and 12-bit quantisation over +-2x its largest value
