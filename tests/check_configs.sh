@@ -24,7 +24,7 @@ fi
 # them the shape fit's last bits differ (docs/design.md 11)
 if [ "$stale" -ne 0 ] && [ "$(uname -m)" = x86_64 ]; then
     case ${GLIBC_TUNABLES:-} in *-FMA*|*-AVX2*) fma=masked ;; *) fma=$(grep -qw fma /proc/cpuinfo && grep -qw avx2 /proc/cpuinfo && echo yes) ;; esac
-    [ "$fma" = yes ] || echo "check_configs: this CPU runs glibc's versions of libm without fused multiply-add (no FMA or AVX2, or GLIBC_TUNABLES masks them); configs/*.h were generated with them, and the shape fit's last bits differ (docs/design.md 11)"
+    [ "$fma" = yes ] || echo "check_configs: this CPU runs glibc's versions of libm without fused multiply-add (no FMA or AVX2, or GLIBC_TUNABLES masks them); configs/*.h were generated with the fused versions, and the shape fit's last bits differ (docs/design.md 11)"
 fi
 [ "$stale" -eq 0 ] && echo "check_configs: ok: $count headers match their scene files, docs/fields.md is current"
 exit $stale
