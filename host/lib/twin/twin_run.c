@@ -8,7 +8,7 @@
 #include "out_json.h"
 
 const char twin_estimates_header[] =
-    "t,s_hat,s_sigma,amplitude,power,y,y_hat,s_true,phase_error,s_error,outliers,health,mu,mu_sigma\n";
+    "t,s_hat,s_sigma,amplitude,power,y,y_hat,s_true,phase_error,s_error,outliers,health,mu,mu_sigma,energy\n";
 
 int twin_stream_open(twin_stream *m, const char *path, double dt, char *err, size_t err_size)
 {
@@ -42,12 +42,19 @@ void twin_stream_close(twin_stream *m)
     measured_close(&m->reader);
 }
 
-static int write_estimate(FILE *out, double t, const bs_observer_estimate *e, double s_true)
+/* A row of the estimates. energy: the twin's energy into the load since its
+ * start (0 without a transducer), whose difference over an interval is the
+ * twin's mean power there exactly; power is the observer's running mean,
+ * a low-pass over the lock-in time that lags the twin by about twice it. */
+static int write_estimate(FILE *out, double t, const bs_observer_estimate *e, double s_true, const bs_sim *twin)
 {
-    return fprintf(out, "%.9g,%.9g,%.4g,%.6g,%.6g,%.6g,%.6g,%.9g,%.5g,%.5g,%lu,%d,%.6g,%.4g\n", t, (double)e->s,
+    bs_transducer_output transducer;
+    bs_sim_get_transducer(twin, &transducer);
+    return fprintf(out, "%.9g,%.9g,%.4g,%.6g,%.6g,%.6g,%.6g,%.9g,%.5g,%.5g,%lu,%d,%.6g,%.4g,%.12g\n", t, (double)e->s,
                    (double)e->s_sigma, (double)e->amplitude, (double)e->power, (double)e->measurement,
                    (double)e->prediction, s_true, (double)e->phase_error, (double)e->s_error,
-                   (unsigned long)e->outliers, e->health, (double)e->mu, (double)e->mu_sigma) < 0;
+                   (unsigned long)e->outliers, e->health, (double)e->mu, (double)e->mu_sigma,
+                   (double)transducer.energy) < 0;
 }
 
 /* The twin's sim and observer: large, on the heap, one per run. */
@@ -86,7 +93,8 @@ static int observe(const twin_run_options *o, twin_state *w, twin_stream *m, FIL
             tally->within += fabs(error) <= o->tolerance;
             tally->error_sq += error * error;
         }
-        if (tally->rows % (uint64_t)o->every == 0 && write_estimate(out, sample.t, &tally->last, sample.s_true) != 0) {
+        if (tally->rows % (uint64_t)o->every == 0
+            && write_estimate(out, sample.t, &tally->last, sample.s_true, &w->sim) != 0) {
             snprintf(err, err_size, "cannot write the estimates");
             return -1;
         }
