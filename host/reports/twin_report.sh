@@ -309,9 +309,9 @@ fi
 # (its commissioning) are kept in DIR/signals/NAME_SEED (150-280 MB a plant,
 # 15 GB for 72), and a plant whose signals are there runs only its twins
 # from them: for a change on the twins' side (the observer, BIN, the twins'
-# options), about a third of the time (fig8 plant 9: 104 s in full, 34 s for
-# its twins). A change of the plant, the signals or the commissioning needs
-# them made again (remove DIR/signals).
+# options), about two thirds of the time (the 72 plants of docs/twin.md: 6265 s
+# in full, 4194 s for their twins). A change of the plant, the signals or the
+# commissioning needs them made again (remove DIR/signals).
 . host/reports/twin_rows.sh
 work_dir
 # the section's and the figures' stamp (host/reports/provenance.sh), naming the knobs
