@@ -106,7 +106,9 @@
  *    (s_sigma below friction_sigma) and the plant climbs (the measured s,
  *    s + s_error, moves at friction_climb or faster, its rate low-passed
  *    over CLIMB_TIME: on a plateau the s error the map leaves need not
- *    depend on mu, and integrated it walked mu^ to its clamp), the s
+ *    depend on mu, and integrated it walked mu^ to its clamp) and the
+ *    excitation holds still (its measured frequency within STEADY_FREQUENCY
+ *    of its mean over STEADY_TIME: a ramp changes the walk as mu would), the s
  *    error is low-passed over friction_time, and what of it is beyond
  *    friction_deadband moves mu:
  *      dmu/dt = -friction_gain mu_scene (persist -+ friction_deadband),
@@ -145,6 +147,11 @@
 #define FRICTION_SENSITIVITY BS_R(0.01)
 /* the time constant of the measured s's rate for the climb gate (8) [s] */
 #define CLIMB_TIME BS_R(1.0)
+/* 8: the excitation is steady while its measured frequency stays within
+ * this part of its own mean over STEADY_TIME [s]: a ramp of r Hz/s lags
+ * that mean by r STEADY_TIME, so 0.1 % a second or more closes the gate */
+#define STEADY_FREQUENCY BS_R(0.001)
+#define STEADY_TIME BS_R(1.0)
 #define INV_SQRT3 BS_R(0.5773502691896258)
 /* 5: a change of s larger than this between two updates (0.001 L in 16
  * samples, 3 L/s at dt = 2e-5 s; the slider drifts at hundredths of L a
@@ -382,6 +389,7 @@ bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer
     obs->friction_learnt = BS_R(0.0);
     obs->climb_s = BS_R(-1.0);
     obs->climb_rate = BS_R(0.0);
+    obs->frequency_mean = BS_R(0.0);
     obs->drift_s = bs_sim_position(sim);
     obs->drift_lag[0] = obs->drift_lag[1] = BS_R(0.0);
     obs->steps = 0;
@@ -899,6 +907,18 @@ static void follow_climb(bs_observer *obs, bs_real interval)
     obs->climb_s = measured;
 }
 
+/* 8: whether the excitation's measured frequency holds still: its mean
+ * over STEADY_TIME followed over interval [s]. While it moves the slider's
+ * walk answers the frequency, not only mu. */
+static int steady_excitation(bs_observer *obs, bs_real interval)
+{
+    const bs_real f = obs->estimate.frequency;
+    if (!(obs->frequency_mean > BS_R(0.0)))
+        obs->frequency_mean = f;
+    obs->frequency_mean += interval / STEADY_TIME * (f - obs->frequency_mean);
+    return bs_fabs(f - obs->frequency_mean) <= STEADY_FREQUENCY * obs->frequency_mean;
+}
+
 /* 8: mu from the persistent part of the s error, over interval [s]. */
 static void estimate_friction(bs_observer *obs, bs_sim *sim, bs_real interval)
 {
@@ -907,11 +927,19 @@ static void estimate_friction(bs_observer *obs, bs_sim *sim, bs_real interval)
     const bs_real low = (BS_R(1.0) - (bs_real)BS_OBSERVER_FRICTION_RANGE) * mu_scene;
     const bs_real high = (BS_R(1.0) + (bs_real)BS_OBSERVER_FRICTION_RANGE) * mu_scene;
     bs_real mu;
-    /* On the low branch |H| hardly depends on s, and near the clamp, where
-     * the map still resolves it, its s error reads the map's error there,
-     * not friction (docs/twin.md, "Friction"): learnt on the high branch only */
     if (!(o->friction_gain > BS_R(0.0)) || !(mu_scene > BS_R(0.0)) || !o->correct_position
-        || (bs_real)obs->steps * sim->scene->dt < o->settle_time || !(obs->estimate.s_sigma < o->friction_sigma)
+        || (bs_real)obs->steps * sim->scene->dt < o->settle_time) {
+        obs->climb_s = BS_R(-1.0);
+        return;
+    }
+    /* A ramp of the excitation changes the walk as friction would (fig6_shift
+     * of the twin report): no learning while the frequency moves, its mean
+     * followed from the settle time on (before, the lock-in's frequency is
+     * still far off). On the low branch |H| hardly depends on s, and near
+     * the clamp, where the map still resolves it, its s error reads the
+     * map's error there, not friction (docs/twin.md, "Friction"): learnt on
+     * the high branch only */
+    if (!steady_excitation(obs, interval) || !(obs->estimate.s_sigma < o->friction_sigma)
         || !(obs->estimate.amplitude > BS_R(2.0) * o->friction_amplitude * sim->scene->half_thickness)) {
         obs->climb_s = BS_R(-1.0);
         return; /* nothing to learn from: mu^ and what is known of it hold */

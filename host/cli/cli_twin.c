@@ -56,7 +56,8 @@ const char cli_twin_help[] =
     "  (default 0.5 s) the persistent error's low-pass, --friction-deadband D (default 0.001) what of it\n"
     "  moves nothing; it learns while s_sigma is below --friction-sigma S (default 0.002) and the\n"
     "  amplitude above --friction-amplitude A beam thicknesses (default 0.5: the high branch), and\n"
-    "  only while the measured s moves at --friction-climb R [1/s] or faster (default 0.001: the climb).\n"
+    "  only while the measured s moves at --friction-climb R [1/s] or faster (default 0.001: the climb)\n"
+    "  and the excitation's frequency holds still (within 0.1 % of its mean over 1 s: not in a ramp).\n"
     "  --jump-hold T: no s correction for T seconds after the measured response starts falling fast (a jump\n"
     "  to the low branch; default 0: none; docs/twin.md, \"Jump hold\").\n";
 
