@@ -256,6 +256,16 @@ twin-bias-long:
 .PHONY: twin-bias-long
 TEST_LONG += twin-bias-long
 
+# The CMocka cases too slow for make test's CPU budget (support_long_only:
+# skipped there), in both precisions: the test binaries that hold one, again
+# with BS_TEST_LONG set (`make test-long`).
+LONG_CASES := test_observer
+tests-long-cases:
+	@set -e; for real in double float; do for t in $(LONG_CASES); do \
+	    echo "== $(BUILD)/$$real/tests/$$t (BS_TEST_LONG=1)"; BS_TEST_LONG=1 $(BUILD)/$$real/tests/$$t; done; done
+.PHONY: tests-long-cases
+TEST_LONG += tests-long-cases
+
 # Fragments of the other tools (reports, reference, robustness) add their own
 # targets and test targets (TEST_EXTRA, TEST_LONG, above).
 -include host/reports/reports.mk tests/reference/reference.mk tests/robustness.mk

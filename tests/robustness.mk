@@ -227,8 +227,8 @@ ASAN_ENV := ASAN_OPTIONS=detect_leaks=1:fast_unwind_on_malloc=0:strict_string_ch
 
 ASAN_MAKE = $(MAKE) --no-print-directory BUILD=$(BUILD)/asan CC=$(ASAN_CC) CFLAGS='$(ASAN_CFLAGS)' REAL=double
 robustness-asan:
-	@echo "== robustness-asan: test-one (double) under -fsanitize=address,undefined ($(ASAN_CC))"
-	@$(ASAN_ENV) $(ASAN_MAKE) -j$(JOBS) test-one
+	@echo "== robustness-asan: test-one (double) under -fsanitize=address,undefined ($(ASAN_CC)), with the long cases"
+	@$(ASAN_ENV) BS_TEST_LONG=1 $(ASAN_MAKE) -j$(JOBS) test-one
 	@echo "robustness-asan: ok"
 
 # The smoke of `make test` (the whole suite under the sanitizers costs about

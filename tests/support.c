@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 void support_load(const char *path, scene_file *file, bs_scene *scene, scene_model *model)
 {
@@ -41,6 +42,13 @@ bs_step_report support_report(const bs_sim *sim)
 }
 
 static uint64_t gaussian_state = 1;
+
+void support_long_only(void)
+{
+    const char *flag = getenv("BS_TEST_LONG");
+    if (!flag || !*flag)
+        skip();
+}
 
 void support_gaussian_seed(uint64_t seed)
 {

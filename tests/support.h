@@ -29,6 +29,11 @@ bs_step_report support_report(const bs_sim *sim);
 void support_gaussian_seed(uint64_t seed);
 double support_gaussian(void);
 
+/* Marks the calling test skipped unless BS_TEST_LONG is set in the
+ * environment: a case too slow for `make test`'s CPU budget, which `make
+ * test-long` runs (tests-long-cases, in the Makefile). */
+void support_long_only(void);
+
 /* Fails unless |actual - expected| <= abs_tol + rel_tol |expected|, printing
  * what was compared, both values and the tolerance. */
 #define assert_close(what, actual, expected, abs_tol, rel_tol) \

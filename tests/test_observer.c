@@ -787,7 +787,8 @@ static void test_design_gives_kalman_gains_and_a_map(void **state)
 /* The ambient frequency moved: with the plant shaken at 110 Hz, fig6's own
  * map (124 Hz) does not apply and s is reported unknown, uncorrected; with
  * gains carrying a map at 110 Hz too, the twin started 0.05 L off is
- * brought back as at 124 Hz, and closer than with the single map. The 124 Hz map of the two is fig6's own. */
+ * brought back as at 124 Hz, and closer than with the single map. The 124 Hz map of the two is fig6's own.
+ * A second design (two maps): 8 CPU-s, `make test-long` only. */
 static void test_maps_at_a_moved_excitation(void **state)
 {
     static bs_observer_gains two;
@@ -797,6 +798,7 @@ static void test_maps_at_a_moved_excitation(void **state)
     char err[256];
     int j;
     (void)state;
+    support_long_only();
     load_fig6();
     o.accel_noise = ACCEL_NOISE;
     o.map_count = 2;

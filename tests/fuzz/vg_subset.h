@@ -6,8 +6,8 @@
  * cases in vg_too_long (each with why it may be left out: it reaches no
  * code the kept cases do not), then includes this header and the test
  * program's source, compiled as it is: its group runs without them. Every
- * case still runs natively in `make test` and under ASan/UBSan in
- * `make test-long`.
+ * case still runs natively in `make test` (a case of support_long_only in
+ * `make test-long`) and under ASan/UBSan in `make test-long`.
  */
 #ifndef VG_SUBSET_H
 #define VG_SUBSET_H
