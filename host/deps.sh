@@ -7,10 +7,12 @@ if ! command -v dpkg-query >/dev/null 2>&1; then
     echo "deps.sh: not a Debian system; make sure these are installed: $*" >&2
     exit 0
 fi
+# one dpkg-query for all of them (it reads dpkg's database once: a call per
+# package cost 30 ms each, and make test asks some 140 times); a package it
+# does not know gets no line, so it is missing too
+installed=$(dpkg-query -W -f='${Package} ${Status}\n' "$@" 2>/dev/null | awk '/ ok installed$/ { print $1 }')
 for package in "$@"; do
-    if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "ok installed"; then
-        missing="$missing $package"
-    fi
+    printf '%s\n' "$installed" | grep -qx -- "$package" || missing="$missing $package"
 done
 [ -z "$missing" ] && exit 0
 if [ "$(id -u)" = 0 ]; then
