@@ -9,7 +9,8 @@
 # hang variant is stopped with status 124 within its 1 s limit. Also: an M4F image on the
 # FPU-less AN385 faults inside startup, before newlib's semihosting set-up, and must still exit
 # 99 (not 0); two counted runs give identical counts; a profile of two brackets sums to their
-# counts and puts the loop's instructions in its function.
+# counts and puts the loop's instructions in its function; probe.sh's means are those of the
+# labelled brackets.
 # If the counting plugin cannot be built (no network for the header), the count checks are
 # skipped with a notice and the rest still runs. Exit status: 0 all passed, 1 otherwise.
 # Env: MAKE (default make), CM_BUILD (default build/cm).
@@ -158,6 +159,16 @@ if [ -n "$counting" ]; then
         "${fl:-0}" -ge 64 -a "${fl:-0}" -le 66 -a "${ram:-99}" -le 2
     check "cycles: empty bracket = $(cycles_of "$out" "bracket empty" cycles) cycles, $(cycles_of "$out" "bracket empty" taken) taken (expect 2, 2)" \
         "$(cycles_of "$out" "bracket empty" cycles)" = 2 -a "$(cycles_of "$out" "bracket empty" taken)" = 2
+    # probe.sh averages every second bracket (a cost-mode image's steps): here the seven
+    # labelled ones, whose means are formed from their labels instead
+    want=$(for label in "bracket empty" "bracket mul_add n=0" "bracket mul_add n=1000" "bracket div_add n=0" \
+               "bracket div_add n=1000" "bracket sum flash" "bracket sum ram"; do
+               echo "$(count_of "$CM_BUILD/cortex-m4f/selftest.out" "$label") $(cycles_of "$out" "$label" cycles)" \
+                   "$(cycles_of "$out" "$label" taken) $(cycles_of "$out" "$label" flash)"
+           done | awk 'NF == 4 { ++n; i += $1; p += $2 + 3 * $3 + 5 * $4 }
+                       END { printf "steps %d insn %.1f pessimistic %.1f", n, n ? i / n : 0, n ? p / n : 0 }')
+    got=$(sh "$here/probe.sh" "$CM_BUILD/cortex-m4f/selftest.elf" 2>/dev/null | awk '{ print $1, $2, $3, $4, $7, $8 }')
+    check "probe.sh: '$got' (expect '$want': the labelled brackets)" "$got" = "$want"
 fi
 
 note=
