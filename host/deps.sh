@@ -12,7 +12,7 @@ fi
 # does not know gets no line, so it is missing too
 installed=$(dpkg-query -W -f='${Package} ${Status}\n' "$@" 2>/dev/null | awk '/ ok installed$/ { print $1 }')
 for package in "$@"; do
-    printf '%s\n' "$installed" | grep -qx -- "$package" || missing="$missing $package"
+    printf '%s\n' "$installed" | grep -qxF -- "$package" || missing="$missing $package"
 done
 [ -z "$missing" ] && exit 0
 if [ "$(id -u)" = 0 ]; then
