@@ -61,8 +61,10 @@ def main():
         amplitude, phase = values[:, j, 0], values[:, j, 1]
         # the scatter from one position to the next (the standard deviation of the differences
         # of neighbouring rows over sqrt 2: the slow trend with s mostly left out)
-        scatter = numpy.diff(phase).std() / numpy.sqrt(2.0) if len(positions) > 2 else float("nan")
-        relative = (numpy.diff(amplitude) / amplitude[1:]).std() / numpy.sqrt(2.0) if len(positions) > 2 else float("nan")
+        scatter = relative = float("nan")
+        if len(positions) > 2:
+            scatter = numpy.diff(phase).std() / numpy.sqrt(2.0)
+            relative = (numpy.diff(amplitude) / amplitude[1:]).std() / numpy.sqrt(2.0)
         print("mu %g: amp_h mean %.4f scatter %.1f %%, phase mean %.2f scatter %.2f, over %d positions" % (
             mu, amplitude.mean(), 100.0 * relative, phase.mean(), scatter, len(positions)))
 
