@@ -116,3 +116,8 @@ __attribute__((naked)) unsigned bs_board_stack_used(void)
         ".ltorg\n\t"
         BS_BOARD_ASM_END);
 }
+
+unsigned bs_board_stack_painted(void)
+{
+    return (unsigned)(bs_board_paint_ref - bs_board_paint_low);
+}

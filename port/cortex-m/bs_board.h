@@ -36,11 +36,13 @@ void bs_board_mark(void);
  * Call both from the same function, with nothing in between that uses stack other than the
  * code to measure (a printf there would be counted too). Neither adds to the result (they are
  * written in assembly; 0 for nothing in between). A result equal to the painted size means
- * the region overflowed (raise BS_BOARD_STACK_PAINT_BYTES). Returns 0 if never painted.
+ * the region overflowed (raise BS_BOARD_STACK_PAINT_BYTES): bs_board_stack_painted() is that
+ * size, which the heap may have made smaller than asked. Returns 0 if never painted.
  * Painting 64 KiB takes ~82 000 instructions: keep it out of instruction-count brackets.
  * Limit: a byte written with the pattern value 0xA5 looks unwritten, so in the rare case
  * that the deepest bytes written hold 0xA5 the result is short by those bytes. */
 void bs_board_stack_paint(void);
 unsigned bs_board_stack_used(void);
+unsigned bs_board_stack_painted(void);
 
 #endif /* BS_BOARD_H */

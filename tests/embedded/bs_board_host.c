@@ -15,3 +15,8 @@ unsigned bs_board_stack_used(void)
 {
     return 0;
 }
+
+unsigned bs_board_stack_painted(void)
+{
+    return 0;
+}

@@ -108,12 +108,18 @@ twin-firmware-test: $(if $(CM_TOOLS_OK),$(TWIN_TEST_DEPS))
 
 # --- cost (make twin-firmware-report) ----------------------------------------------
 # the whole 60 s stream, every producer call and observer step bracketed (TWIN_COST=1);
-# twin scenes fig6 and fig6_1mode, constants in flash and in RAM, and fig6 on the M7
+# twin scenes fig6 and fig6_1mode, constants in flash and in RAM, and fig6 on the M7.
+# The cost images measure the main loop's stack too, painting the stack below it again
+# after each 10 Hz report: a window of 4 KiB (the loop uses under 1 KiB; the image stops
+# with an error if it ever fills the window), not the 64 KiB default, whose painting and
+# scanning the per-sample count carried though a firmware has none (tests/qemu/twin_probe.sh on
+# twin-cost-friction-off: 2647.1 estimated cycles a sample with 64 KiB, 2591.8 with 4 KiB).
+TWIN_COST_FLAGS := -DTWIN_COST=1 -DBS_BOARD_STACK_PAINT_BYTES=4096
 TWIN_RAM_FLAGS := -DTWIN_CONSTANTS_IN_RAM=1 -mslow-flash-data
 $(foreach s,fig6 fig6_1mode,\
-    $(call twin_image,twin-cost-$s,cortex-m4f,$s,float,fig6-60s,sim,-DTWIN_COST=1)\
-    $(call twin_image,twin-cost-$s-ram,cortex-m4f,$s,float,fig6-60s,sim,-DTWIN_COST=1 $(TWIN_RAM_FLAGS)))
-$(call twin_image,twin-cost-fig6,cortex-m7,fig6,float,fig6-60s,sim,-DTWIN_COST=1)
+    $(call twin_image,twin-cost-$s,cortex-m4f,$s,float,fig6-60s,sim,$(TWIN_COST_FLAGS))\
+    $(call twin_image,twin-cost-$s-ram,cortex-m4f,$s,float,fig6-60s,sim,$(TWIN_COST_FLAGS) $(TWIN_RAM_FLAGS)))
+$(call twin_image,twin-cost-fig6,cortex-m7,fig6,float,fig6-60s,sim,$(TWIN_COST_FLAGS))
 # The fig6 twin at the coarser step of docs/design.md 4 ("Prewarped frequencies"):
 # fig6 with [numerics] dt = TWIN_FAST_DT and prewarp = on, a scene generated here
 # (TWIN_DIR/fig6_fast.ini, its header by `beamslider gen`), on its own 60 s stream
@@ -134,8 +140,8 @@ $(TWIN_DIR)/fig6_fast-fast-60s/twin_gains.h: $(TWIN_DIR)/fig6_fast.ini $(TWIN_DI
 	@mkdir -p $(dir $@)
 	$(TWIN_CLI) twin-gains $< --noise $(call twin_noise,$(TWIN_DIR)/fast-60s.csv,noise) \
 	    --accel-noise $(call twin_noise,$(TWIN_DIR)/fast-60s.csv,accel_noise) --name twin_gains > $@.tmp && mv $@.tmp $@
-$(call twin_image,twin-cost-fig6_fast,cortex-m4f,fig6_fast,float,fast-60s,sim,-DTWIN_COST=1)
-$(call twin_image,twin-cost-fig6_fast-ram,cortex-m4f,fig6_fast,float,fast-60s,sim,-DTWIN_COST=1 $(TWIN_RAM_FLAGS))
+$(call twin_image,twin-cost-fig6_fast,cortex-m4f,fig6_fast,float,fast-60s,sim,$(TWIN_COST_FLAGS))
+$(call twin_image,twin-cost-fig6_fast-ram,cortex-m4f,fig6_fast,float,fast-60s,sim,$(TWIN_COST_FLAGS) $(TWIN_RAM_FLAGS))
 # report arguments TARGET:SCENE:VARIANT:ELF[:DT] (DT: the stream's sample period, 2e-5 s
 # when not given)
 TWIN_COST_SPECS := cortex-m4f:fig6:flash:$(call cm_elf,twin-cost-fig6,cortex-m4f) \
@@ -148,8 +154,8 @@ TWIN_COST_SPECS := cortex-m4f:fig6:flash:$(call cm_elf,twin-cost-fig6,cortex-m4f
 # the friction estimate's cost (docs/twin.md, "Friction"): the 1 s stream without it and
 # with it running at every update (gate open, deadband wide: mu, and so the trajectory, stay
 # as without it, so that the brackets differ by the estimate alone)
-$(call twin_image,twin-cost-friction-off,cortex-m4f,fig6,float,fig6-1s,sim,-DTWIN_COST=1)
-$(call twin_image,twin-cost-friction-on,cortex-m4f,fig6,float,fig6-1s,sim,-DTWIN_COST=1 -DTWIN_FRICTION_GAIN=60 \
+$(call twin_image,twin-cost-friction-off,cortex-m4f,fig6,float,fig6-1s,sim,$(TWIN_COST_FLAGS))
+$(call twin_image,twin-cost-friction-on,cortex-m4f,fig6,float,fig6-1s,sim,$(TWIN_COST_FLAGS) -DTWIN_FRICTION_GAIN=60 \
     -DTWIN_FRICTION_SIGMA=1.5 -DTWIN_FRICTION_AMPLITUDE=0 -DTWIN_FRICTION_CLIMB=0 -DTWIN_FRICTION_DEADBAND=1)
 twin-friction-cost: $(if $(CM_TOOLS_OK),$(call cm_elf,twin-cost-friction-off,cortex-m4f) \
         $(call cm_elf,twin-cost-friction-on,cortex-m4f) $(TWIN_DIR)/fig6-1s.stream)

@@ -26,32 +26,38 @@
 #define TWIN_STEP_CYCLES TWIN_SAMPLE_CYCLES
 #endif
 
-static uint64_t now, next_sample;
+/* Cycles from now to the end of the next sample period; 0 or less once it
+ * has passed (the producer is owed a call). 64 bits: a stated overload owes
+ * more than 2^31 cycles over a long stream. */
+static int64_t until_sample;
 
+/* The value is kept in a local while the producer runs: its marks (a memory
+ * clobber) would have the static read again after each call. */
 static void run_producer(void)
 {
-    while (next_sample <= now) {
+    int64_t until = until_sample;
+    while (until <= 0) {
         twin_produce();
-        next_sample += TWIN_SAMPLE_CYCLES;
+        until += TWIN_SAMPLE_CYCLES;
     }
+    until_sample = until;
 }
 
 void twin_clock_start(void)
 {
-    now = 0;
-    next_sample = TWIN_SAMPLE_CYCLES; /* sample 1 is the mean over the first period */
+    until_sample = TWIN_SAMPLE_CYCLES; /* sample 1 is the mean over the first period */
 }
 
 void twin_clock_spent(uint32_t steps)
 {
-    now += (uint64_t)steps * TWIN_STEP_CYCLES;
+    until_sample -= (int64_t)steps * TWIN_STEP_CYCLES;
     run_producer();
 }
 
 void twin_clock_wait(void)
 {
-    if (now < next_sample)
-        now = next_sample;
+    if (until_sample > 0)
+        until_sample = 0;
     run_producer();
 }
 
