@@ -218,7 +218,7 @@ share_rows() {
         }
         { k = part_of($1); for (c = 2; c <= 13; ++c) { v[k, c] += $c; v[0, c] += $c } }
         END {
-            split("the observer'"'"'s correction (core/src/bs_observer.c)|the twin'"'"'s step|the producer (its bracket)", name, "|")
+            split("the observer'"'"'s correction (core/src/bs_observer.c)|the twin'"'"'s step|the rest within the brackets (the producer, the marks, the firmware's own code around the step's call)", name, "|")
             for (k = 1; k <= 3; ++k)
                 printf "| %s | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f |\n", name[k], v[k, 8] / samples,
                     v[k, 3] / samples, v[k, 9] / samples, v[k, 10] / samples, v[k, 11] / samples, v[k, 12] / samples,
