@@ -13,6 +13,8 @@
 set -u
 [ $# -eq 1 ] || [ $# -eq 3 ] || { echo "usage: $0 ELF [EXTRA EVERY]" >&2; exit 2; }
 extra=${2:-0} every=${3:-1}
+case $extra in '' | *[!0-9]*) echo "twin_backlog.sh: EXTRA '$extra' is not a whole number of cycles" >&2; exit 2 ;; esac
+case $every in '' | 0 | *[!0-9]*) echo "twin_backlog.sh: EVERY '$every' is not a positive whole number of samples" >&2; exit 2 ;; esac
 status=$(mktemp)
 trap 'rm -f "$status" "$status.line"' EXIT
 # the count streamed into the recursion (the 60 s stream prints 12 million lines)
