@@ -54,51 +54,6 @@ DT=0.00002                      # the stream's sample period [s] (fig6)
 CLOCKS="168 200 240 280 320 360 400 480" # M4F clocks of the backlog table [MHz]
 ENTRY=24                        # SysTick entry + return [cycles]
 
-# The summary of one image's counted run -> "NAME VALUE" lines
-SUMMARY_AWK='
-    function lindley(j, cost) {
-        w[j] += cost - budget[j]; if (w[j] < 0) w[j] = 0
-        if (w[j] > most[j]) most[j] = w[j]
-    }
-    BEGIN { n_clock = split(clocks, clock, " "); for (j = 1; j <= n_clock; ++j) budget[j] = clock[j] * dt * 1e6
-            if (!cycles) { n_clock = 1; clock[1] = mhz; budget[1] = mhz * dt * 1e6 } }
-    /^\[insn\] total/ { next }
-    /^\[insn\] [0-9]+/ {
-        ++marks
-        if (NF >= 8) { opt = $4 + $6; pess = $4 + 3 * $6 + 5 * $8 } else { opt = pess = $2 }
-        if (marks > 1) { acc_insn += $2; acc += pess }  # the first interval is the start-up
-        if (marks % 4 == 2) { ++np; p_insn += $2; p_pess += pess; if (pess > p_worst) p_worst = pess }
-        if (marks % 4 == 0) {
-            ++n; s_insn += $2; s_opt += opt; s_pess += pess
-            if ($2 > s_worst_insn) s_worst_insn = $2
-            if (opt > s_worst_opt) s_worst_opt = opt
-            if (pess > s_worst_pess) s_worst_pess = pess
-            cost = acc + (cycles ? entry : 0)
-            sample += cost; sample_insn += acc_insn
-            if (cost > sample_worst) sample_worst = cost
-            if (cost > budget[1]) ++over
-            for (j = 1; j <= n_clock; ++j) lindley(j, cost)
-            if (!overflow && w[1] > fifo * budget[1]) overflow = n
-            acc = 0; acc_insn = 0
-        }
-        next
-    }
-    /^end status/ { for (i = 2; i < NF; ++i) end[$i] = $(i + 1); endline = $0 }
-    { print > logfile }
-    END {
-        if (!n) exit 1
-        printf "samples %d\nstep_insn %.0f\nstep_worst_insn %d\nproducer_insn %.1f\n", n, s_insn / n, s_worst_insn, p_insn / np
-        if (cycles)
-            printf "step_opt %.0f\nstep_worst_opt %d\nstep_pess %.0f\nstep_worst_pess %d\nproducer_pess %.1f\n",
-                s_opt / n, s_worst_opt, s_pess / n, s_worst_pess, p_pess / np
-        printf "sample_insn %.0f\nsample %.0f\nsample_worst %d\nover %d\noverflow %d\n", sample_insn / n, sample / n, sample_worst, over, overflow
-        for (j = 1; j <= n_clock; ++j) {
-            q = int(most[j] / budget[j]); if (q * budget[j] < most[j]) ++q
-            time = most[j] / budget[j] * dt
-            printf "backlog_%d %d\nbacklog_time_%d %s\n", clock[j], q, clock[j], time < 1 ? sprintf("%.1f ms", time * 1e3) : sprintf("%.1f s", time)
-        }
-        printf "status %s\nstack %s\ns %s\nhash %s\n", end["status"], end["stack"], end["s"], end["hash"]
-    }'
 val() { awk -v name="$2" '$1 == name { sub(/^[^ ]+ /, ""); print; found = 1; exit } END { if (!found) print "-" }' "$1"; }
 
 # sizes ELF -> "core_code twin_code scene gains": code generated from the core and from
@@ -136,11 +91,12 @@ run_job() {
     # observer's share can be told from the step's (~1.5x the time)
     profile=
     [ "$target:$(word "$1" 2):$(word "$1" 3)" != cortex-m4f:fig6:flash ] || profile=profile=$TMP/job-$j.profile
+    # the count streamed into its summary, "NAME VALUE" lines (tests/qemu/twin_samples.awk)
     { status=0
       CM_CYCLES=$cycles CM_PROFILE=$profile sh tests/qemu/count.sh "$elf" "$target" 3600 || status=$?
       echo "$status" > "$TMP/job-$j.status"; } |
         awk -v clocks="$CLOCKS" -v dt="$(dt_of "$1")" -v entry=$ENTRY -v fifo="$FIFO" -v cycles="${cycles:-0}" -v mhz=$mhz \
-            -v logfile="$TMP/job-$j.log" "$SUMMARY_AWK" > "$TMP/job-$j.sum" || :
+            -v logfile="$TMP/job-$j.log" -f tests/qemu/twin_samples.awk > "$TMP/job-$j.sum" || :
     [ -z "$profile" ] || [ "$(cat "$TMP/job-$j.status")" != 0 ] ||
         sh tests/qemu/classes.sh "$TMP/job-$j.profile" "$elf" > "$TMP/job-$j.classes"
 }

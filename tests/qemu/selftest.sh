@@ -10,7 +10,7 @@
 # FPU-less AN385 faults inside startup, before newlib's semihosting set-up, and must still exit
 # 99 (not 0); two counted runs give identical counts; a profile of two brackets sums to their
 # counts and puts the loop's instructions in its function; probe.sh's means are those of the
-# labelled brackets.
+# labelled brackets; twin_samples.awk's means and backlogs on a made-up count.
 # If the counting plugin cannot be built (no network for the header), the count checks are
 # skipped with a notice and the rest still runs. Exit status: 0 all passed, 1 otherwise.
 # Env: MAKE (default make), CM_BUILD (default build/cm).
@@ -170,6 +170,26 @@ if [ -n "$counting" ]; then
     got=$(sh "$here/probe.sh" "$CM_BUILD/cortex-m4f/selftest.elf" 2>/dev/null | awk '{ print $1, $2, $3, $4, $7, $8 }')
     check "probe.sh: '$got' (expect '$want': the labelled brackets)" "$got" = "$want"
 fi
+
+# twin_samples.awk (twin_probe.sh, the twin firmware report) on a made-up count: the start-up
+# interval, then a sample's intervals (the loop since the last step, the producer, the loop,
+# the observer step; the first sample has no loop before it) costing 150, 150 and 0 cycles
+# against a budget of 100 (5 MHz x 2e-5 s): backlog 50, 100, 0, at most 1 sample; with 100
+# more on every second sample 150, 250, 0: 50, 200, 100, 2 samples
+samples_of() { # samples_of EXTRA EVERY -> "sample MEAN backlog W over K step S producer P"
+    awk 'BEGIN { print "[insn] 9 cycles 9 taken 0 flash 0"
+                 split("20 10 120 0 20 10 120 0 0 0 0", c, " ")
+                 for (i = 1; i <= 11; ++i) printf "[insn] 1 cycles %d taken 0 flash 0\n", c[i]
+                 print "end status 0 stack 8 s 0.5 hash ab est cd" }' |
+        awk -v cycles=1 -v clocks=5 -v dt=0.00002 -v entry=0 -v fifo=1 -v extra="$1" -v every="$2" \
+            -v digits=1 -f "$here/twin_samples.awk" |
+        awk '{ v[$1] = $2 } END { print "sample", v["sample"], "backlog", v["backlog_5"], "over", v["over"],
+                                  "step", v["step_pess"], "producer", v["producer_pess"], v["hash"], v["est"] }'
+}
+got=$(samples_of 0 1)
+check "twin_samples.awk: '$got'" "$got" = "sample 100.0 backlog 1 over 2 step 80.0 producer 13.3 ab cd"
+got=$(samples_of 100 2)
+check "twin_samples.awk, 100 cycles on every second sample: '$got'" "$got" = "sample 133.3 backlog 2 over 2 step 80.0 producer 13.3 ab cd"
 
 note=
 [ -n "$counting" ] || note=" (instruction counts not checked)"
