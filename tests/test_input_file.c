@@ -171,6 +171,35 @@ static void test_lines(void **state)
     fclose(file);
 }
 
+/* The fields of a line: blanks, a trailing blank run, a number and its unit. */
+static void test_fields(void **state)
+{
+    char text[] = "  1 \t ";
+    double value = 0.0;
+    (void)state;
+    assert_string_equal(input_skip_blanks(" \t x "), "x ");
+    input_trim_end(text);
+    assert_string_equal(text, "  1");
+    input_trim_end(text + 3); /* an empty text stays empty */
+    assert_int_equal(input_number(" 1e3 Hz ", "Hz", &value), 0);
+    assert_true(value == 1e3);
+    assert_int_equal(input_number("2.5Hz", "Hz", &value), 0);
+    assert_true(value == 2.5);
+    assert_int_equal(input_number("-4", NULL, &value), 0);
+    assert_true(value == -4.0);
+    assert_int_equal(input_number("1 m/s^2", "m", &value), -1); /* "m" is not "m/s^2" */
+    assert_int_equal(input_number("1 m/s^2", "m/s^2", &value), 0);
+    assert_int_equal(input_number("1 Hzx", "Hz", &value), -1);
+    assert_int_equal(input_number("1 Hz x", "Hz", &value), -1);
+    assert_int_equal(input_number("1", "Hz", &value), -1);
+    assert_int_equal(input_number("1 2", NULL, &value), -1);
+    assert_int_equal(input_number("Hz", "Hz", &value), -1);
+    assert_int_equal(input_number("", NULL, &value), -1);
+    assert_int_equal(input_number("inf", NULL, &value), -1);
+    assert_int_equal(input_number("nan", NULL, &value), -1);
+    assert_int_equal(input_number("1e999", NULL, &value), -1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -178,6 +207,7 @@ int main(void)
         cmocka_unit_test(test_size_bound),
         cmocka_unit_test(test_identity),
         cmocka_unit_test(test_lines),
+        cmocka_unit_test(test_fields),
     };
     return cmocka_run_group_tests(tests, make_tmp_dir, remove_tmp_dir);
 }

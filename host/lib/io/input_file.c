@@ -13,6 +13,8 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -185,4 +187,37 @@ int input_lines_next(input_lines *in, char *text, size_t size, char *err, size_t
         --length;
     text[length] = '\0';
     return 1;
+}
+
+const char *input_skip_blanks(const char *text)
+{
+    while (*text == ' ' || *text == '\t')
+        ++text;
+    return text;
+}
+
+void input_trim_end(char *text)
+{
+    size_t length = strlen(text);
+    while (length > 0 && (text[length - 1] == ' ' || text[length - 1] == '\t'))
+        --length;
+    text[length] = '\0';
+}
+
+int input_number(const char *text, const char *unit, double *value)
+{
+    char *end;
+    const char *rest;
+    text = input_skip_blanks(text);
+    *value = strtod(text, &end);
+    if (end == text || !isfinite(*value))
+        return -1;
+    rest = input_skip_blanks(end);
+    if (unit) {
+        const size_t n = strlen(unit);
+        if (strncmp(rest, unit, n) != 0 || (rest[n] != '\0' && rest[n] != ' ' && rest[n] != '\t'))
+            return -1;
+        rest = input_skip_blanks(rest + n);
+    }
+    return *rest == '\0' ? 0 : -1;
 }

@@ -11,7 +11,9 @@
  *
  * Text is read line by line through input_lines: each line bounded, a NUL
  * byte refused (not a text file), \n or \r\n ends, the bytes read counted
- * against the kind's bound (a file that grows while it is read).
+ * against the kind's bound (a file that grows while it is read). The
+ * readers of headed CSV files (a record, measured signals) take a line's
+ * fields apart with input_skip_blanks, input_trim_end and input_number.
  */
 #ifndef INPUT_FILE_H
 #define INPUT_FILE_H
@@ -77,5 +79,16 @@ void input_lines_start(input_lines *in, FILE *file, const char *path, long long 
  * characters" (N = size - 1), "PATH:LINE: a NUL byte: not a text file", a
  * read error or a file grown past its bound in err. */
 int input_lines_next(input_lines *in, char *text, size_t size, char *err, size_t err_size);
+
+/* text from its first character that is not a blank (space or tab). */
+const char *input_skip_blanks(const char *text);
+
+/* Removes text's trailing blanks, in place. */
+void input_trim_end(char *text);
+
+/* text is a finite number (strtod's syntax), then, unless unit is NULL, the
+ * word unit ("10 Hz", not "10 Hzx"), blanks allowed around: 0 with *value,
+ * or -1 (*value undefined). */
+int input_number(const char *text, const char *unit, double *value);
 
 #endif

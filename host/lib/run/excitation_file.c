@@ -37,44 +37,14 @@
 
 /* ---- CSV */
 
-static const char *skip_blanks(const char *text)
-{
-    while (*text == ' ' || *text == '\t')
-        ++text;
-    return text;
-}
-
 /* The next line of the record into s->text, trailing blanks removed: 1, 0
  * at the end, -1 with err filled. */
 static int next_line(excitation_source *s, char *err, size_t err_size)
 {
     const int status = input_lines_next(&s->lines, s->text, sizeof s->text, err, err_size);
-    if (status > 0) {
-        size_t length = strlen(s->text);
-        while (length > 0 && (s->text[length - 1] == ' ' || s->text[length - 1] == '\t'))
-            --length;
-        s->text[length] = '\0';
-    }
+    if (status > 0)
+        input_trim_end(s->text);
     return status;
-}
-
-/* text is a finite number followed by unit (NULL: by nothing), blanks
- * allowed between; 0 or -1. */
-static int number_in(const char *text, const char *unit, double *value)
-{
-    char *end;
-    const char *rest;
-    text = skip_blanks(text);
-    *value = strtod(text, &end);
-    if (end == text || !isfinite(*value))
-        return -1;
-    rest = skip_blanks(end);
-    if (unit) {
-        if (strncmp(rest, unit, strlen(unit)) != 0)
-            return -1;
-        rest = skip_blanks(rest + strlen(unit));
-    }
-    return *rest == '\0' ? 0 : -1;
 }
 
 /* The header being read: which fields were set, and to what. */
@@ -105,11 +75,11 @@ static int header_line(const excitation_source *s, const char *text, csv_header 
     size_t n = 0;
     const char *value;
 
-    text = skip_blanks(text);
+    text = input_skip_blanks(text);
     while (n < sizeof key - 1 && ((text[n] >= 'a' && text[n] <= 'z') || (text[n] >= '0' && text[n] <= '9')
                                   || text[n] == '_'))
         ++n;
-    value = skip_blanks(text + n);
+    value = input_skip_blanks(text + n);
     if (n == 0 || *value != '=')
         return 0;
     memcpy(key, text, n);
@@ -121,9 +91,9 @@ static int header_line(const excitation_source *s, const char *text, csv_header 
             return -1;
         }
         h->has_rate = 1;
-        if (number_in(value, "Hz", &h->rate) != 0 || !(h->rate > 0.0)) {
+        if (input_number(value, "Hz", &h->rate) != 0 || !(h->rate > 0.0)) {
             snprintf(err, err_size, "%s:%ld: sample_rate must be a finite number > 0 followed by Hz, not '%s'",
-                     path, line, skip_blanks(value));
+                     path, line, input_skip_blanks(value));
             return -1;
         }
         if (!(h->rate >= EXCITATION_RATE_MIN && h->rate <= EXCITATION_RATE_MAX)) {
@@ -132,7 +102,7 @@ static int header_line(const excitation_source *s, const char *text, csv_header 
             return -1;
         }
     } else if (!strcmp(key, "unit")) {
-        value = skip_blanks(value);
+        value = input_skip_blanks(value);
         if (h->has_unit) {
             snprintf(err, err_size, "%s:%ld: unit given twice", path, line);
             return -1;
@@ -153,9 +123,9 @@ static int header_line(const excitation_source *s, const char *text, csv_header 
             return -1;
         }
         h->has_t0 = 1;
-        if (number_in(value, "s", &h->t0) != 0) {
+        if (input_number(value, "s", &h->t0) != 0) {
             snprintf(err, err_size, "%s:%ld: t0 must be a finite number followed by s, not '%s'", path, line,
-                     skip_blanks(value));
+                     input_skip_blanks(value));
             return -1;
         }
         return check_t0(s, "t0", h->t0, err, err_size);
@@ -182,12 +152,12 @@ static int data_line(excitation_source *s, double values[2], char *err, size_t e
                      "the acceleration", s->path, s->lines.line);
             return -1;
         }
-        if (*skip_blanks(field) == '\0') {
+        if (*input_skip_blanks(field) == '\0') {
             snprintf(err, err_size, "%s:%ld: empty value", s->path, s->lines.line);
             return -1;
         }
-        if (number_in(field, NULL, &values[count]) != 0) {
-            snprintf(err, err_size, "%s:%ld: '%s' is not a finite number", s->path, s->lines.line, skip_blanks(field));
+        if (input_number(field, NULL, &values[count]) != 0) {
+            snprintf(err, err_size, "%s:%ld: '%s' is not a finite number", s->path, s->lines.line, input_skip_blanks(field));
             return -1;
         }
         ++count;

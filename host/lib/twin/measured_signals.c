@@ -41,43 +41,13 @@ typedef struct header_state {
     int noise_unit;           /* the signal whose unit the noise was given in */
 } header_state;
 
-static const char *skip_blanks(const char *text)
-{
-    while (*text == ' ' || *text == '\t')
-        ++text;
-    return text;
-}
-
 /* The next line into m->text, trailing blanks removed: 1, 0, -1. */
 static int next_line(measured_reader *m, char *err, size_t err_size)
 {
     const int status = input_lines_next(&m->lines, m->text, sizeof m->text, err, err_size);
-    if (status > 0) {
-        size_t length = strlen(m->text);
-        while (length > 0 && (m->text[length - 1] == ' ' || m->text[length - 1] == '\t'))
-            --length;
-        m->text[length] = '\0';
-    }
+    if (status > 0)
+        input_trim_end(m->text);
     return status;
-}
-
-/* text is a finite number, then blanks and unit (NULL: nothing); 0 or -1. */
-static int number_in(const char *text, const char *unit, double *value)
-{
-    char *end;
-    const char *rest;
-    text = skip_blanks(text);
-    *value = strtod(text, &end);
-    if (end == text || !isfinite(*value))
-        return -1;
-    rest = skip_blanks(end);
-    if (unit) {
-        const size_t n = strlen(unit);
-        if (strncmp(rest, unit, n) != 0 || (rest[n] != '\0' && rest[n] != ' ' && rest[n] != '\t'))
-            return -1;
-        rest = skip_blanks(rest + n);
-    }
-    return *rest == '\0' ? 0 : -1;
 }
 
 /* One of choices (count of them) exactly: its index, or -1. */
@@ -103,15 +73,15 @@ static int header_field(measured_reader *m, header_state *h, const char *text, c
 {
     measured_header *out = &m->header;
     const char *equals = strchr(text, '=');
-    const char *value = skip_blanks(equals + 1);
+    const char *value = input_skip_blanks(equals + 1);
     char key[32];
     size_t n;
     int id, which;
     double number;
 
-    text = skip_blanks(text);
+    text = input_skip_blanks(text);
     n = strspn(text, "abcdefghijklmnopqrstuvwxyz0123456789_");
-    if (n == 0 || n >= sizeof key || skip_blanks(text + n) != equals)
+    if (n == 0 || n >= sizeof key || input_skip_blanks(text + n) != equals)
         FAIL("a header line with '=' is a field '# key = value' (key: lower-case letters, digits and _; "
              "known: %s); a free comment holds no '='", KNOWN_KEYS);
     memcpy(key, text, n);
@@ -125,7 +95,7 @@ static int header_field(measured_reader *m, header_state *h, const char *text, c
     h->line[id] = m->lines.line;
     switch ((key_id)id) {
     case KEY_RATE:
-        if (number_in(value, "Hz", &out->rate) != 0)
+        if (input_number(value, "Hz", &out->rate) != 0)
             FAIL("sample_rate must be a finite number followed by Hz, not '%s'", value);
         if (!(out->rate >= MEASURED_RATE_MIN && out->rate <= MEASURED_RATE_MAX))
             FAIL("sample_rate %g Hz is out of range; allowed: %g .. %g Hz", out->rate, MEASURED_RATE_MIN,
@@ -144,11 +114,11 @@ static int header_field(measured_reader *m, header_state *h, const char *text, c
             FAIL("base_accel_unit must be m/s^2, not '%s'", value);
         break;
     case KEY_LATENCY:
-        if (number_in(value, "s", &out->latency) != 0 || !(out->latency >= 0.0))
+        if (input_number(value, "s", &out->latency) != 0 || !(out->latency >= 0.0))
             FAIL("latency must be a finite number >= 0 followed by s, not '%s'", value);
         break;
     case KEY_NOISE:
-        for (which = 0; which < 2 && number_in(value, signal_units[which], &number) != 0; ++which)
+        for (which = 0; which < 2 && input_number(value, signal_units[which], &number) != 0; ++which)
             ;
         if (which == 2 || !(number > 0.0))
             FAIL("noise must be a finite number > 0 followed by the signal's unit (m or V), not '%s'", value);
@@ -156,7 +126,7 @@ static int header_field(measured_reader *m, header_state *h, const char *text, c
         h->noise_unit = which;
         break;
     case KEY_ACCEL_NOISE:
-        if (number_in(value, "m/s^2", &out->accel_noise) != 0 || !(out->accel_noise >= 0.0))
+        if (input_number(value, "m/s^2", &out->accel_noise) != 0 || !(out->accel_noise >= 0.0))
             FAIL("accel_noise must be a finite number >= 0 followed by m/s^2, not '%s'", value);
         break;
     case KEY_PLANT:
@@ -282,10 +252,10 @@ int measured_next(measured_reader *m, measured_row *row, char *err, size_t err_s
             *comma = '\0';
         if (i == columns)
             FAIL("more than %d values: the column line names %d", columns, columns);
-        if (*skip_blanks(field) == '\0')
+        if (*input_skip_blanks(field) == '\0')
             FAIL("empty value in column %s", column_names[i]);
-        if (number_in(field, NULL, &value[i]) != 0)
-            FAIL("%s '%s' is not a finite number", column_names[i], skip_blanks(field));
+        if (input_number(field, NULL, &value[i]) != 0)
+            FAIL("%s '%s' is not a finite number", column_names[i], input_skip_blanks(field));
         if (!comma)
             break;
         field = comma + 1;
