@@ -5,24 +5,31 @@
 #include "out_json.h"
 #include "scene_summary.h"
 
+/* The grid both summaries share: the points of each varied parameter, the
+ * points, the repeats and the cases. */
+static void print_grid(out_json *s, const summary_map *m)
+{
+    int v;
+    out_json_open(s, "vary");
+    for (v = 0; v < m->grid->vary_count; ++v)
+        out_json_int(s, m->grid->vary[v].name, m->grid->vary[v].count);
+    out_json_close(s);
+    out_json_count(s, "points", (unsigned long long)m->grid->points);
+    out_json_int(s, "repeat", m->grid->repeat);
+    out_json_count(s, "cases", (unsigned long long)m->grid->cases);
+}
+
 int summary_print_map(FILE *out, const scene_file *file, const summary_map *m)
 {
     out_json s;
     char shard[32];
-    int v;
 
     out_json_start(&s);
     out_json_text(&s, "scene", file->params.name);
     scene_summary_overrides(&s, file);
     out_json_text(&s, "command", "map");
     out_json_text(&s, "precision", BS_REAL_NAME);
-    out_json_open(&s, "vary");
-    for (v = 0; v < m->grid->vary_count; ++v)
-        out_json_int(&s, m->grid->vary[v].name, m->grid->vary[v].count);
-    out_json_close(&s);
-    out_json_count(&s, "points", (unsigned long long)m->grid->points);
-    out_json_int(&s, "repeat", m->grid->repeat);
-    out_json_count(&s, "cases", (unsigned long long)m->grid->cases);
+    print_grid(&s, m);
     snprintf(shard, sizeof shard, "%d/%d", m->shard_index, m->shard_count);
     out_json_text(&s, "shard", shard);
     out_json_count(&s, "shard_cases", (unsigned long long)m->shard_cases);
@@ -45,18 +52,11 @@ int summary_print_map(FILE *out, const scene_file *file, const summary_map *m)
 int summary_print_merge(FILE *out, const char *scene, const summary_map *m)
 {
     out_json s;
-    int v;
 
     out_json_start(&s);
     out_json_text(&s, "scene", scene);
     out_json_text(&s, "command", "map-merge");
-    out_json_open(&s, "vary");
-    for (v = 0; v < m->grid->vary_count; ++v)
-        out_json_int(&s, m->grid->vary[v].name, m->grid->vary[v].count);
-    out_json_close(&s);
-    out_json_count(&s, "points", (unsigned long long)m->grid->points);
-    out_json_int(&s, "repeat", m->grid->repeat);
-    out_json_count(&s, "cases", (unsigned long long)m->grid->cases);
+    print_grid(&s, m);
     out_json_count(&s, "done", (unsigned long long)m->done_total);
     out_json_count(&s, "torn_lines", (unsigned long long)m->torn);
     out_json_count(&s, "invalid_lines", (unsigned long long)m->invalid);
