@@ -1,9 +1,14 @@
 /* support.c - shared helpers of the CMocka tests. */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp */
+
 #include "support.h"
 
+#include <dirent.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
 
 void support_load(const char *path, scene_file *file, bs_scene *scene, scene_model *model)
 {
@@ -66,4 +71,30 @@ double support_gaussian(void)
         u[i] = ((double)((gaussian_state * UINT64_C(2685821657736338717)) >> 11) + 0.5) / 9007199254740992.0;
     }
     return sqrt(-2.0 * log(u[0])) * cos(6.283185307179586 * u[1]);
+}
+
+int support_tmp_dir(char *dir, size_t size, const char *name)
+{
+    const int n = snprintf(dir, size, "/tmp/%s.XXXXXX", name);
+    return n > 0 && (size_t)n < size && mkdtemp(dir) ? 0 : -1;
+}
+
+int support_tmp_dir_remove(const char *dir)
+{
+    DIR *d = opendir(dir);
+    struct dirent *entry;
+    char path[1024];
+    int status = 0;
+
+    if (!d)
+        return -1;
+    while ((entry = readdir(d)) != NULL) {
+        if (!strcmp(entry->d_name, ".") || !strcmp(entry->d_name, ".."))
+            continue;
+        snprintf(path, sizeof path, "%s/%s", dir, entry->d_name);
+        if (unlink(path) != 0)
+            status = -1;
+    }
+    closedir(d);
+    return rmdir(dir) == 0 ? status : -1;
 }

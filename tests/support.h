@@ -29,6 +29,13 @@ bs_step_report support_report(const bs_sim *sim);
 void support_gaussian_seed(uint64_t seed);
 double support_gaussian(void);
 
+/* A new folder /tmp/NAME.XXXXXX, its path in dir (size bytes): 0, or -1. */
+int support_tmp_dir(char *dir, size_t size, const char *name);
+
+/* Removes folder dir and the files in it (a test's folder has no
+ * sub-folders): 0, or -1 if a file or the folder could not be removed. */
+int support_tmp_dir_remove(const char *dir);
+
 /* Marks the calling test skipped unless BS_TEST_LONG is set in the
  * environment: a case too slow for `make test`'s CPU budget, which `make
  * test-long` runs (tests-long-cases, in the Makefile). */

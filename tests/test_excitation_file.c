@@ -15,16 +15,13 @@
  * Files are written into a temporary folder. The numbers are doubles on the
  * host side in either REAL, so the tolerances are those of double.
  */
-#define _POSIX_C_SOURCE 200809L /* mkdtemp */
 
 #include "support.h"
 
-#include <dirent.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "excitation_file.h"
 
@@ -37,27 +34,13 @@ static char err[1024];
 static int make_tmp_dir(void **state)
 {
     (void)state;
-    strcpy(tmp_dir, "/tmp/test_excitation_file.XXXXXX");
-    return mkdtemp(tmp_dir) ? 0 : -1;
+    return support_tmp_dir(tmp_dir, sizeof tmp_dir, "test_excitation_file");
 }
 
 static int remove_tmp_dir(void **state)
 {
-    DIR *dir = opendir(tmp_dir);
-    struct dirent *entry;
-    char name[512];
-
     (void)state;
-    if (!dir)
-        return -1;
-    while ((entry = readdir(dir)) != NULL) {
-        if (strcmp(entry->d_name, ".") && strcmp(entry->d_name, "..")) {
-            snprintf(name, sizeof name, "%s/%s", tmp_dir, entry->d_name);
-            unlink(name);
-        }
-    }
-    closedir(dir);
-    return rmdir(tmp_dir);
+    return support_tmp_dir_remove(tmp_dir);
 }
 
 /* Writes size bytes to tmp_dir/name and leaves its path in path. */

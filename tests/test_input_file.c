@@ -5,11 +5,10 @@
  * and the bound; a file that changes between two passes is told apart; lines
  * are bounded, NUL bytes refused, \n and \r\n ends both read.
  */
-#define _POSIX_C_SOURCE 200809L /* mkdtemp, mkfifo, ftruncate */
+#define _POSIX_C_SOURCE 200809L /* mkfifo, ftruncate */
 
 #include "support.h"
 
-#include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,27 +24,13 @@ static char err[1024];
 static int make_tmp_dir(void **state)
 {
     (void)state;
-    strcpy(tmp_dir, "/tmp/test_input_file.XXXXXX");
-    return mkdtemp(tmp_dir) ? 0 : -1;
+    return support_tmp_dir(tmp_dir, sizeof tmp_dir, "test_input_file");
 }
 
 static int remove_tmp_dir(void **state)
 {
-    DIR *dir = opendir(tmp_dir);
-    struct dirent *entry;
-    char name[512];
-
     (void)state;
-    if (!dir)
-        return -1;
-    while ((entry = readdir(dir)) != NULL) {
-        if (strcmp(entry->d_name, ".") && strcmp(entry->d_name, "..")) {
-            snprintf(name, sizeof name, "%s/%s", tmp_dir, entry->d_name);
-            unlink(name);
-        }
-    }
-    closedir(dir);
-    return rmdir(tmp_dir);
+    return support_tmp_dir_remove(tmp_dir);
 }
 
 static void write_text(const char *name, const char *text, size_t size)

@@ -6,7 +6,6 @@
  * rows. tests/check_inputs.sh feeds the same malformed streams to
  * `beamslider twin` and to twin_pack.
  */
-#define _POSIX_C_SOURCE 200809L /* mkdtemp */
 
 #include "support.h"
 
@@ -14,7 +13,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "measured_signals.h"
 
@@ -25,16 +23,13 @@ static char err[1024];
 static int make_tmp_dir(void **state)
 {
     (void)state;
-    strcpy(tmp_dir, "/tmp/test_measured.XXXXXX");
-    return mkdtemp(tmp_dir) ? 0 : -1;
+    return support_tmp_dir(tmp_dir, sizeof tmp_dir, "test_measured");
 }
 
 static int remove_tmp_dir(void **state)
 {
-    char command[128];
     (void)state;
-    snprintf(command, sizeof command, "rm -rf '%s'", tmp_dir);
-    return system(command) == 0 ? 0 : -1;
+    return support_tmp_dir_remove(tmp_dir);
 }
 
 static void write_text(const char *name, const char *text)

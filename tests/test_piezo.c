@@ -26,7 +26,7 @@
  * root. In a core built with BS_WITH_PIEZO = 0 only test 5 and the refusal
  * of a transducer scene run.
  */
-#define _POSIX_C_SOURCE 200809L /* mkdtemp */
+#define _POSIX_C_SOURCE 200809L /* getcwd */
 
 #include "support.h"
 
@@ -996,8 +996,7 @@ static int make_tmp_dir(void **state)
 {
     char cwd[SCENE_PATH - 32];
     (void)state;
-    strcpy(tmp_dir, "/tmp/test_piezo.XXXXXX");
-    if (!mkdtemp(tmp_dir) || !getcwd(cwd, sizeof cwd))
+    if (support_tmp_dir(tmp_dir, sizeof tmp_dir, "test_piezo") != 0 || !getcwd(cwd, sizeof cwd))
         return -1;
     snprintf(fig6_path, sizeof fig6_path, "%s/configs/fig6.ini", cwd);
     return 0;
@@ -1005,11 +1004,8 @@ static int make_tmp_dir(void **state)
 
 static int remove_tmp_dir(void **state)
 {
-    char path[SCENE_PATH + 16];
     (void)state;
-    snprintf(path, sizeof path, "%s/scene.ini", tmp_dir);
-    remove(path);
-    return rmdir(tmp_dir);
+    return support_tmp_dir_remove(tmp_dir);
 }
 
 int main(void)

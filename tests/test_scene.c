@@ -13,7 +13,6 @@
 #include "scene_limits.h"
 
 #include <ctype.h>
-#include <dirent.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -209,9 +208,8 @@ static void check_field_accepted(const char *section, const char *key, const cha
 static int make_tmp_dir(void **state)
 {
     (void)state;
-    strcpy(tmp_dir, "/tmp/test_scene.XXXXXX");
-    if (!mkdtemp(tmp_dir)) {
-        perror("mkdtemp");
+    if (support_tmp_dir(tmp_dir, sizeof tmp_dir, "test_scene") != 0) {
+        perror("support_tmp_dir");
         return -1;
     }
     copy_file("configs/mssp2023.ini", "mssp2023.ini");
@@ -220,21 +218,8 @@ static int make_tmp_dir(void **state)
 
 static int remove_tmp_dir(void **state)
 {
-    DIR *dir = opendir(tmp_dir);
-    struct dirent *entry;
-    char path[SCENE_PATH];
-
     (void)state;
-    if (!dir)
-        return -1;
-    while ((entry = readdir(dir)) != NULL) {
-        if (!strcmp(entry->d_name, ".") || !strcmp(entry->d_name, ".."))
-            continue;
-        snprintf(path, sizeof path, "%s/%s", tmp_dir, entry->d_name);
-        unlink(path);
-    }
-    closedir(dir);
-    return rmdir(tmp_dir);
+    return support_tmp_dir_remove(tmp_dir);
 }
 
 /* ---- shipped scenes --------------------------------------------------- */

@@ -13,12 +13,10 @@
 #include "bs_revision.h"
 
 #include <cjson/cJSON.h>
-#include <dirent.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "run.h"
 #include "scene_values.h"
@@ -63,8 +61,7 @@ static int make_tmp_dir(void **state)
     FILE *in;
 
     (void)state;
-    strcpy(tmp_dir, "/tmp/test_summary.XXXXXX");
-    if (!mkdtemp(tmp_dir))
+    if (support_tmp_dir(tmp_dir, sizeof tmp_dir, "test_summary") != 0)
         return -1;
     in = fopen("configs/mssp2023.ini", "r");
     if (!in)
@@ -79,21 +76,8 @@ static int make_tmp_dir(void **state)
 
 static int remove_tmp_dir(void **state)
 {
-    DIR *dir = opendir(tmp_dir);
-    struct dirent *entry;
-    char path[SCENE_PATH];
-
     (void)state;
-    if (!dir)
-        return -1;
-    while ((entry = readdir(dir)) != NULL) {
-        if (!strcmp(entry->d_name, ".") || !strcmp(entry->d_name, ".."))
-            continue;
-        snprintf(path, sizeof path, "%s/%s", tmp_dir, entry->d_name);
-        unlink(path);
-    }
-    closedir(dir);
-    return rmdir(tmp_dir);
+    return support_tmp_dir_remove(tmp_dir);
 }
 
 /* What print wrote to a temporary file, into line. */
