@@ -80,6 +80,18 @@ static inline void fuzz_copy_config(const char *name)
     fuzz_write(fuzz_path(name), text, size);
 }
 
+/* The offset of the first mark (a line such as "\n#@base\n") in the input,
+ * or size: a target that feeds two files splits its input there. */
+static inline size_t fuzz_split(const uint8_t *data, size_t size, const char *mark)
+{
+    const size_t length = strlen(mark);
+    size_t i;
+    for (i = 0; i + length <= size; ++i)
+        if (!memcmp(data + i, mark, length))
+            return i;
+    return size;
+}
+
 /* A message a reader returned with status (0 or -1): terminated, and not
  * empty on a refusal. */
 static inline void fuzz_check_message(int status, const char *message, size_t size)

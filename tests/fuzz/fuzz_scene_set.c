@@ -49,17 +49,8 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
     return 0;
 }
 
-/* The offset of the first "\n#@set\n" (the scene's end), or size. */
-static size_t split(const uint8_t *data, size_t size)
-{
-    static const char mark[] = "\n#@set\n";
-    const size_t length = sizeof mark - 1;
-    size_t i;
-    for (i = 0; i + length <= size; ++i)
-        if (!memcmp(data + i, mark, length))
-            return i;
-    return size;
-}
+/* The line that ends the scene: --set assignments follow it. */
+static const char set_mark[] = "\n#@set\n";
 
 static int has_control(const char *text)
 {
@@ -100,9 +91,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     static char assignment[MAX_ASSIGNMENT];
     const char *path = fuzz_path("s.ini");
-    const size_t cut = split(data, size);
+    const size_t cut = fuzz_split(data, size, set_mark);
     char message[1024];
-    size_t at = cut + 7;
+    size_t at = cut + sizeof set_mark - 1;
     int status, sets = 0;
 
     fuzz_write(path, data, cut);
