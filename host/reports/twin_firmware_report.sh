@@ -174,7 +174,7 @@ share_rows() {
         }
         { k = part_of($1); for (c = 2; c <= 13; ++c) { v[k, c] += $c; v[0, c] += $c } }
         END {
-            split("the observer'"'"'s correction (core/src/bs_observer.c)|the twin'"'"'s step|the rest within the brackets (the producer, the marks, the firmware's own code around the step's call)", name, "|")
+            split("the observer'"'"'s correction (core/src/bs_observer.c)|the twin'"'"'s step|the rest within the brackets (the producer, the marks, the firmware'"'"'s own code around the step'"'"'s call)", name, "|")
             for (k = 1; k <= 3; ++k)
                 printf "| %s | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f |\n", name[k], v[k, 8] / samples,
                     v[k, 3] / samples, v[k, 9] / samples, v[k, 10] / samples, v[k, 11] / samples, v[k, 12] / samples,
@@ -190,11 +190,11 @@ for c in $CLOCKS; do clock_head="$clock_head $c MHz ($((c * 20)) cycles) |"; clo
 fig6=$TMP/job-$(job cortex-m4f fig6 flash).sum
 fig6ram=$TMP/job-$(job cortex-m4f fig6 ram).sum
 one=$TMP/job-$(job cortex-m4f fig6_1mode ram).sum
-# share_of PART -> the part's cycles per sample (share_rows' second column)
-share_of() {
-    share_rows "$TMP/job-$(job cortex-m4f fig6 flash).classes" "$(val "$fig6" samples)" "$(val "$fig6" sample)" "$(val "$fig6" sample_insn)" |
-        awk -F'|' -v k="$1" 'NR == k { gsub(/ /, "", $3); print $3 }'
-}
+share_table=$(share_rows "$TMP/job-$(job cortex-m4f fig6 flash).classes" "$(val "$fig6" samples)" "$(val "$fig6" sample)" \
+    "$(val "$fig6" sample_insn)") && [ "$(printf '%s\n' "$share_table" | wc -l)" -eq 5 ] || {
+    echo "twin_firmware_report: the share table of the profiled image failed" >&2; exit 1; }
+# share_of PART -> the part's cycles per sample (share_table's second column)
+share_of() { printf '%s\n' "$share_table" | awk -F'|' -v k="$1" 'NR == k { gsub(/ /, "", $3); print $3 }'; }
 # target_row TEXT LIMIT FLASH RAM -> a row, met if either value is within the limit
 target_row() {
     awk -v text="$1" -v limit="$2" -v flash="$3" -v ram="$4" 'BEGIN {
@@ -324,7 +324,7 @@ $(share_of 2).
 
 | part | cycles/sample | FP operations/sample | FP cycles | load cycles | store cycles | control cycles | other cycles | instructions/sample |
 |---|---|---|---|---|---|---|---|---|
-$(share_rows "$TMP/job-$(job cortex-m4f fig6 flash).classes" "$(val "$fig6" samples)" "$(val "$fig6" sample)" "$(val "$fig6" sample_insn)")
+$share_table
 
 **Memory** (bytes). Code: .text of the core and of the firmware's files (port/cortex-m/twin);
 constants: the scene and the gains in flash; RAM: the twin (\`bs_sim\`), the observer (three
