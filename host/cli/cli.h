@@ -83,6 +83,14 @@ int cli_open_outputs_reading(cli_output *outputs, int count, const scene_file *s
 /* The same for a command that reads nothing but its scene. */
 int cli_open_outputs(cli_output *outputs, int count, const scene_file *scene);
 
+/* The checks of cli_open_outputs_reading alone, nothing opened or
+ * truncated: for a command that refuses such outputs before long work (twin,
+ * before its response maps); it opens them with cli_open_outputs_reading
+ * after, which checks again. The same returns, CLI_FAILED only for more
+ * than CLI_MAX_OUTPUTS outputs. */
+int cli_check_outputs_reading(const cli_output *outputs, int count, const scene_file *scene, const cli_input *inputs,
+                              int input_count);
+
 /* 1 if path names the same existing file as an input of the scene (the
  * file or a base; through links), with that input's path in *input. */
 int cli_is_scene_file(const char *path, const scene_file *scene, const char **input);

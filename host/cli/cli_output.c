@@ -238,6 +238,29 @@ int cli_open_outputs(cli_output *outputs, int count, const scene_file *scene)
     return cli_open_outputs_reading(outputs, count, scene, NULL, 0);
 }
 
+/* ids[i] of outputs[i] (unknown where it has no path), then check_overlaps. */
+static int identify_outputs(const cli_output *outputs, file_identity *ids, int count, const scene_file *scene,
+                            const cli_input *inputs, int input_count)
+{
+    int i;
+    if (count > CLI_MAX_OUTPUTS) {
+        cli_error("internal: %d outputs, at most %d", count, CLI_MAX_OUTPUTS);
+        return CLI_FAILED;
+    }
+    memset(ids, 0, sizeof(file_identity) * (size_t)count);
+    for (i = 0; i < count; ++i)
+        if (outputs[i].path)
+            identify(outputs[i].path, &ids[i], 0);
+    return check_overlaps(outputs, ids, count, scene, inputs, input_count);
+}
+
+int cli_check_outputs_reading(const cli_output *outputs, int count, const scene_file *scene, const cli_input *inputs,
+                              int input_count)
+{
+    file_identity ids[CLI_MAX_OUTPUTS];
+    return identify_outputs(outputs, ids, count, scene, inputs, input_count);
+}
+
 int cli_open_outputs_reading(cli_output *outputs, int count, const scene_file *scene, const cli_input *inputs,
                              int input_count)
 {
@@ -246,19 +269,12 @@ int cli_open_outputs_reading(cli_output *outputs, int count, const scene_file *s
     int created[CLI_MAX_OUTPUTS];
     int i, status;
 
-    if (count > CLI_MAX_OUTPUTS) {
-        cli_error("internal: %d outputs, at most %d", count, CLI_MAX_OUTPUTS);
-        return CLI_FAILED;
-    }
-    memset(ids, 0, sizeof ids);
-    for (i = 0; i < count; ++i) {
+    for (i = 0; i < count && i < CLI_MAX_OUTPUTS; ++i) {
         outputs[i].file = NULL;
         fds[i] = -1;
         created[i] = 0;
-        if (outputs[i].path)
-            identify(outputs[i].path, &ids[i], 0);
     }
-    if ((status = check_overlaps(outputs, ids, count, scene, inputs, input_count)) != 0)
+    if ((status = identify_outputs(outputs, ids, count, scene, inputs, input_count)) != 0)
         return status;
     for (i = 0; i < count; ++i) {
         if (!outputs[i].path)

@@ -518,14 +518,16 @@ static int twin(twin_scene *t, twin_cli *c)
     }
     noise = !isnan(c->noise) ? c->noise : !isnan(header->noise) ? header->noise
                                                                : 0.01 * sqrt(m.y_sq / (double)m.reader.rows);
-    if (design(c, t, c->signal, noise, !isnan(c->accel_noise) ? c->accel_noise : header->accel_noise) != 0) {
-        twin_stream_close(&m);
-        return CLI_USAGE;
-    }
     output.option = "--out";
     output.path = c->out_path;
     measured_input.option = "--measured";
     measured_input.path = c->measured_path;
+    /* an --out that is an input is refused before the response maps (seconds of work) */
+    if ((status = cli_check_outputs_reading(&output, 1, &t->file, &measured_input, 1)) != CLI_OK
+        || design(c, t, c->signal, noise, !isnan(c->accel_noise) ? c->accel_noise : header->accel_noise) != 0) {
+        twin_stream_close(&m);
+        return status != CLI_OK ? status : CLI_USAGE;
+    }
     if ((status = cli_open_outputs_reading(&output, 1, &t->file, &measured_input, 1)) != CLI_OK) {
         twin_stream_close(&m);
         return status;
