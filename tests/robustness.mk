@@ -262,12 +262,14 @@ robustness-asan-smoke:
 VG := valgrind -q --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect,possible
 # The test programs run under valgrind whole, but VG_SUBSET: those without
 # their longest cases (tests/fuzz/vg_NAME.c, the same source without the
-# cases it lists and says why; docs/robustness.md section 1).
+# cases it lists and says why; docs/robustness.md section 1). Each of those
+# runs natively first, saving its observer designs, which its run under
+# valgrind reads back (tests/fuzz/vg_short_maps.h).
 VG_SUBSET := test_sim test_observer test_contact test_friction test_shape
 VG_TESTS := $(filter-out $(VG_SUBSET),$(TESTS))
 VG_OBJ := $(BUILD)/double
 
-$(VG_OBJ)/tests/fuzz/vg_%: tests/fuzz/vg_%.c tests/%.c tests/fuzz/vg_subset.h $(VG_OBJ)/tests/support.o \
+$(VG_OBJ)/tests/fuzz/vg_%: tests/fuzz/vg_%.c tests/%.c tests/fuzz/vg_subset.h tests/fuzz/vg_short_maps.h $(VG_OBJ)/tests/support.o \
         $(HOST_LIB_SRC:%.c=$(VG_OBJ)/%.o) $(CORE_SRC:%.c=$(VG_OBJ)/%.o) | deps-test
 	@mkdir -p $(dir $@)
 	$(CC) -O2 -g $(BASE_CFLAGS) -I$(VG_OBJ)/include -Icore/include -Icore/src -Iport -Iport/host $(HOST_INC) -Itests \
@@ -280,9 +282,13 @@ robustness-valgrind: robustness-deps
 	@$(MAKE) --no-print-directory -j$(JOBS) REAL=double $(VG_TESTS:%=$(VG_OBJ)/tests/%) $(VG_OBJ)/beamslider \
 	    $(VG_SUBSET:%=$(VG_OBJ)/tests/fuzz/vg_%)
 	@echo "== robustness-valgrind: valgrind memcheck ($(words $(VG_TESTS)) test programs + subsets of $(VG_SUBSET) + CLI)"
-	@set -e; for t in $(VG_SUBSET:%=$(VG_OBJ)/tests/fuzz/vg_%) $(VG_TESTS:%=$(VG_OBJ)/tests/%); do \
-	    start=$$(date +%s); \
-	    $(VG) --log-file=$(VG_OBJ)/valgrind.log ./$$t >$(VG_OBJ)/valgrind.out 2>&1 \
+	@set -e; mkdir -p $(VG_OBJ)/vg_gains; \
+	for t in $(VG_SUBSET:%=$(VG_OBJ)/tests/fuzz/vg_%) $(VG_TESTS:%=$(VG_OBJ)/tests/%); do \
+	    start=$$(date +%s); gains=$(VG_OBJ)/vg_gains/$$(basename $$t); \
+	    case $$t in */fuzz/vg_*) VG_GAINS_SAVE=$$gains ./$$t >$(VG_OBJ)/valgrind.out 2>&1 \
+	        || { cat $(VG_OBJ)/valgrind.out; echo "robustness-valgrind: FAIL: $$t (natively, saving its designs)"; exit 1; } ;; \
+	    *) gains= ;; esac; \
+	    VG_GAINS_LOAD=$$gains $(VG) --log-file=$(VG_OBJ)/valgrind.log ./$$t >$(VG_OBJ)/valgrind.out 2>&1 \
 	        || { cat $(VG_OBJ)/valgrind.out $(VG_OBJ)/valgrind.log; echo "robustness-valgrind: FAIL: $$t"; exit 1; }; \
 	    [ ! -s $(VG_OBJ)/valgrind.log ] || { cat $(VG_OBJ)/valgrind.log; echo "robustness-valgrind: FAIL: $$t"; exit 1; }; \
 	    echo "ok   - valgrind $$t ($$(( $$(date +%s) - start )) s)"; \
