@@ -77,8 +77,12 @@ FUZZ_HEADERS = $(wildcard core/*/*.h port/*.h port/host/*.h tests/fuzz/*.h) $(HO
 # the build configuration of a precision (the host build's, Makefile)
 fuzz_real_flag = -I$(BUILD)/$1/include
 
-# fuzz_objects PRECISION: the library objects of one precision
+# fuzz_objects PRECISION: the library objects of one precision; the test and
+# fuzz programs take the revision's order-only (fuzz_revision: a commit
+# changes it, and they publish it nowhere; the Makefile's test programs alike)
 fuzz_objects = $(FUZZ_SRC:%.c=$(FUZZ_BUILD)/$1/%.o)
+fuzz_revision = $(FUZZ_BUILD)/$1/host/lib/scene/source_revision.o
+fuzz_objects_but_revision = $(filter-out $(call fuzz_revision,$1),$(call fuzz_objects,$1))
 
 # The source revision the host library states (map_store.c, scene_summary.c), for
 # both precisions: the Makefile makes it only for the REAL of the make.
@@ -96,15 +100,15 @@ $(FUZZ_BUILD)/$1/tests/fuzz/%.o: tests/fuzz/%.c $$(FUZZ_HEADERS) $(BUILD)/$1/inc
 	@mkdir -p $$(dir $$@)
 	$$(FUZZ_CC) $$(FUZZ_BASE) $$(WARNINGS) $(call fuzz_real_flag,$1) -fsanitize=fuzzer-no-link -c -o $$@ $$<
 
-$(FUZZ_BUILD)/$1/host/lib/map/map_store.o $(FUZZ_BUILD)/$1/host/lib/scene/scene_summary.o: $(FUZZ_BUILD)/include/bs_revision.h
+$(FUZZ_BUILD)/$1/host/lib/scene/source_revision.o: $(FUZZ_BUILD)/include/bs_revision.h
 endef
 $(eval $(call fuzz_precision_rules,double))
 $(eval $(call fuzz_precision_rules,float))
 
 # fuzz_link TARGET PRECISION SOURCE: tests/fuzz/SOURCE.c with the host library and the core
 define fuzz_link
-$(FUZZ_BUILD)/$1: $(FUZZ_BUILD)/$2/tests/fuzz/$3.o $(call fuzz_objects,$2)
-	$$(FUZZ_CC) $$(FUZZ_BASE) -fsanitize=fuzzer -o $$@ $$^ $$(HOST_LIBS)
+$(FUZZ_BUILD)/$1: $(FUZZ_BUILD)/$2/tests/fuzz/$3.o $(call fuzz_objects_but_revision,$2) | $(call fuzz_revision,$2)
+	$$(FUZZ_CC) $$(FUZZ_BASE) -fsanitize=fuzzer -o $$@ $$^ $(call fuzz_revision,$2) $$(HOST_LIBS)
 endef
 $(foreach t,$(FUZZ_DOUBLE),$(eval $(call fuzz_link,$t,double,$t)))
 $(foreach t,$(FUZZ_FLOAT),$(eval $(call fuzz_link,$t_float,float,$t)))
@@ -243,13 +247,13 @@ ASAN_SMOKE_TESTS := test_input_file test_excitation_file test_measured test_chec
 ASAN_SMOKE := $(SANITIZED)/smoke
 $(FUZZ_BUILD)/double/tests/%.o $(FUZZ_BUILD)/double/host/cli/%.o: FUZZ_BASE += -Itests -Ihost/cli
 $(FUZZ_BUILD)/double/tests/%.o: $(wildcard tests/*.h) | deps-test
-$(FUZZ_BUILD)/double/host/cli/main.o: $(FUZZ_BUILD)/include/bs_revision.h
 $(FUZZ_BUILD)/smoke/beamslider: $(HOST_CLI_SRC:%.c=$(FUZZ_BUILD)/double/%.o) $(call fuzz_objects,double)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_BASE) -o $@ $^ $(HOST_LIBS)
-$(FUZZ_BUILD)/smoke/%: $(FUZZ_BUILD)/double/tests/%.o $(FUZZ_BUILD)/double/tests/support.o $(call fuzz_objects,double)
+$(FUZZ_BUILD)/smoke/%: $(FUZZ_BUILD)/double/tests/%.o $(FUZZ_BUILD)/double/tests/support.o \
+        $(call fuzz_objects_but_revision,double) | $(call fuzz_revision,double)
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_BASE) -o $@ $^ $(TEST_LIBS)
+	$(FUZZ_CC) $(FUZZ_BASE) -o $@ $^ $(call fuzz_revision,double) $(TEST_LIBS)
 robustness-asan-smoke:
 	@$(SANITIZED_MAKE) -j$(JOBS) $(ASAN_SMOKE)/beamslider $(ASAN_SMOKE_TESTS:%=$(ASAN_SMOKE)/%)
 	@echo "== robustness-asan-smoke: the CLI's crafted inputs and the readers' tests under -fsanitize=address,undefined ($(FUZZ_CC))"

@@ -10,7 +10,6 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include "support.h"
-#include "bs_revision.h"
 
 #include <cjson/cJSON.h>
 #include <math.h>
@@ -20,6 +19,7 @@
 
 #include "run.h"
 #include "scene_values.h"
+#include "source_revision.h"
 #include "run_summary.h"
 #include "sweep.h"
 
@@ -231,7 +231,7 @@ static void test_run_summary_keeps_the_number_formats(void **state)
              "\"amp_periods\":25,\"wall_s\":2.359,\"steps_per_s\":1.272e+06,\"max_pgs_iters\":2,"
              "\"unconverged_steps\":13,\"contact_steps\":2713455,\"mean_pgs_iters\":1.003,\"max_systems\":8,"
              "\"mean_systems\":0.1607,\"hash\":\"a75df610\",%s,\"version\":\"%s\","
-             "\"revision\":\"%s\"}\n", BS_REAL_NAME, hashes, BS_VERSION_STRING, BS_REVISION);
+             "\"revision\":\"%s\"}\n", BS_REAL_NAME, hashes, BS_VERSION_STRING, source_revision());
     assert_string_equal(line, expected);
     root = parse_summary(run_keys);
     cJSON_Delete(root);
@@ -312,7 +312,7 @@ static void test_sweep_summary_is_json_with_its_formats(void **state)
              "\"max_pgs_iters\":2,\"unconverged_steps\":0,\"contact_steps\":4,\"mean_pgs_iters\":1.25,"
              "\"max_systems\":3,\"mean_systems\":0.75,%s,"
              "\"version\":\"%s\",\"revision\":\"%s\"}\n",
-             BS_REAL_NAME, hashes, BS_VERSION_STRING, BS_REVISION);
+             BS_REAL_NAME, hashes, BS_VERSION_STRING, source_revision());
     assert_string_equal(line, expected);
     root = parse_summary(sweep_keys);
     assert_string_equal(cJSON_GetObjectItemCaseSensitive(root, "scene")->valuestring, name);

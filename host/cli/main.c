@@ -4,8 +4,8 @@
 #include <stdio.h>
 #include <string.h>
 #include "beamslider.h"
-#include "bs_revision.h"
 #include "cli.h"
+#include "source_revision.h"
 
 typedef struct cli_command {
     const char *name;
@@ -77,7 +77,7 @@ int main(int argc, char **argv)
                 return finish(commands[i].run(argc - 2, argv + 2));
             }
         if (argc == 2 && !strcmp(argv[1], "--version")) {
-            printf("beamslider %s (revision %s), core precision %s\n", bs_version(), BS_REVISION, BS_REAL_NAME);
+            printf("beamslider %s (revision %s), core precision %s\n", bs_version(), source_revision(), BS_REAL_NAME);
             return finish(CLI_OK);
         }
         if (is_help(argv[1])) {

@@ -13,11 +13,11 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "bs_revision.h"
 #include "input_file.h"
 #include "map_case.h"
 #include "out_text.h"
 #include "scene_values.h"
+#include "source_revision.h"
 
 /* The identity's format; raised whenever the result rows' columns change
  * (2: s_final became s_settled, window_s added), so that a folder of an
@@ -99,7 +99,7 @@ char *map_identity_text(const map_grid *grid, const scene_file *base, const char
         }
         append(&t, "\n");
     }
-    snprintf(line, sizeof line, "info revision = %s\n", BS_REVISION);
+    snprintf(line, sizeof line, "info revision = %s\n", source_revision());
     append(&t, line);
     append_info(&t, "scene", base->params.name);
     append_info(&t, "scene_file", scene_path);

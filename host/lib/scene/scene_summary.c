@@ -2,8 +2,8 @@
 #include "scene_summary.h"
 
 #include <stdio.h>
-#include "bs_revision.h"
 #include "scene_values.h"
+#include "source_revision.h"
 
 void scene_summary_overrides(out_json *json, const scene_file *file)
 {
@@ -38,5 +38,5 @@ void scene_summary_hashes(out_json *json, const scene_file *file, const bs_scene
 void scene_summary_provenance(out_json *json)
 {
     out_json_text(json, "version", bs_version());
-    out_json_text(json, "revision", BS_REVISION);
+    out_json_text(json, "revision", source_revision());
 }
