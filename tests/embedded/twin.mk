@@ -55,15 +55,22 @@ $(TWIN_DIR)/%.stream: $(TWIN_DIR)/%.csv $(TWIN_PACK)
 
 # the noise a CSV states: twin_noise CSV KEY (noise or accel_noise)
 twin_noise = $$(sed -n 's/^\# $2 = \([^ ]*\) .*/\1/p' $1)
-# $(TWIN_DIR)/SCENE-STREAM/twin_gains.h: the observer's constants of twin scene SCENE for STREAM
-$(TWIN_DIR)/%/twin_gains.h: $(TWIN_CLI)
+# $(TWIN_DIR)/SCENE-STREAM/twin_gains.h: the observer's constants of twin scene SCENE for
+# STREAM, written only when its text changes (twin_gains.stamp is what is remade): the CLI
+# is relinked at every commit, its revision in it, and the firmware compiled against the
+# header need not be (make reads the header's time again after its empty recipe)
+$(TWIN_DIR)/%/twin_gains.stamp: $(TWIN_CLI)
 	@mkdir -p $(dir $@)
 	@set -e; scene=$(word 1,$(subst -, ,$*)); csv=$(TWIN_DIR)/$(patsubst $(word 1,$(subst -, ,$*))-%,%,$*).csv; \
+	    header=$(dir $@)twin_gains.h; \
 	    $(TWIN_CLI) twin-gains configs/$$scene.ini --noise $(call twin_noise,$$csv,noise) \
-	        --accel-noise $(call twin_noise,$$csv,accel_noise) --name twin_gains > $@.tmp && mv $@.tmp $@
-$(TWIN_DIR)/fig6-fig6-1s/twin_gains.h: $(TWIN_DIR)/fig6-1s.csv configs/fig6.ini
-$(TWIN_DIR)/fig6-fig6-60s/twin_gains.h: $(TWIN_DIR)/fig6-60s.csv configs/fig6.ini
-$(TWIN_DIR)/fig6_1mode-fig6-60s/twin_gains.h: $(TWIN_DIR)/fig6-60s.csv configs/fig6_1mode.ini
+	        --accel-noise $(call twin_noise,$$csv,accel_noise) --name twin_gains > $$header.tmp; \
+	    if cmp -s $$header.tmp $$header; then rm -f $$header.tmp; else mv $$header.tmp $$header; fi; touch $@
+$(TWIN_DIR)/%/twin_gains.h: $(TWIN_DIR)/%/twin_gains.stamp ;
+.PRECIOUS: $(TWIN_DIR)/%/twin_gains.stamp
+$(TWIN_DIR)/fig6-fig6-1s/twin_gains.stamp: $(TWIN_DIR)/fig6-1s.csv configs/fig6.ini
+$(TWIN_DIR)/fig6-fig6-60s/twin_gains.stamp: $(TWIN_DIR)/fig6-60s.csv configs/fig6.ini
+$(TWIN_DIR)/fig6_1mode-fig6-60s/twin_gains.stamp: $(TWIN_DIR)/fig6-60s.csv configs/fig6_1mode.ini
 
 TWIN_COMMON_SRC := $(TWIN_SRC_DIR)/twin_main.c $(TWIN_SRC_DIR)/twin_fifo.c
 # twin_flags SCENE REAL STREAM EXTRA: the compile flags of a twin image or host build
