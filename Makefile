@@ -173,9 +173,10 @@ $(OBJ)/tests/%.o: tests/%.c $(wildcard tests/*.h core/*/*.h) $(HOST_HEADERS) $(C
 	$(CC) $(CFLAGS) $(TEST_CFLAGS) -c -o $@ $<
 
 # The test programs take the revision order-only: a commit changes it, and
-# relinking every test program of both precisions for a string they publish
-# nowhere cost about 17 CPU-s a precision (docs/testing.md); they state the
-# revision of their last link.
+# relinking every test program for a string they publish nowhere cost about
+# 5 CPU-s a precision (test-one-build after an empty commit: 17.1 -> 12.4,
+# the rest the CLI's -flto link; docs/testing.md); they state the revision
+# of their last link.
 REVISION_OBJ := $(OBJ)/host/lib/scene/source_revision.o
 $(OBJ)/tests/test_%: $(OBJ)/tests/test_%.o $(OBJ)/tests/support.o $(filter-out $(REVISION_OBJ),$(HOST_LIB_OBJ)) \
         $(CORE_OBJ) | $(REVISION_OBJ)
