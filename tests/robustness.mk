@@ -84,7 +84,7 @@ fuzz_objects = $(FUZZ_SRC:%.c=$(FUZZ_BUILD)/$1/%.o)
 fuzz_revision = $(FUZZ_BUILD)/$1/host/lib/scene/source_revision.o
 fuzz_objects_but_revision = $(filter-out $(call fuzz_revision,$1),$(call fuzz_objects,$1))
 
-# The source revision the host library states (map_store.c, scene_summary.c), for
+# The source revision the host library states (host/lib/scene/source_revision.c), for
 # both precisions: the Makefile makes it only for the REAL of the make.
 $(FUZZ_BUILD)/include/bs_revision.h: .force
 	@mkdir -p $(dir $@)
