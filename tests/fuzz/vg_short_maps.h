@@ -9,9 +9,9 @@
  * valgrind (432 s and 375 s against 145 s and 139 s).
  *
  * And its designs can be read back instead of made again: with
- * VG_GAINS_SAVE=PREFIX (not empty) the program writes the gains of its n-th design to
- * PREFIX.n, with VG_GAINS_LOAD=PREFIX it reads them from there (failing the
- * design if the file is missing or short). robustness-valgrind runs each
+ * VG_GAINS_SAVE=PREFIX (not empty) the program writes the gains of its n-th
+ * design to PREFIX.n, with VG_GAINS_LOAD=PREFIX it reads them from there
+ * (failing the design if the file is missing or short). robustness-valgrind runs each
  * such program natively with the first, then under valgrind with the second:
  * the same binary on the same inputs, so the same gains bit for bit, without
  * the millions of steps of the maps' sweeps under memcheck (about half of
