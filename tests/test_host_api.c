@@ -206,7 +206,7 @@ static int design(const bs_host_scene *scene, bs_observer_gains *gains)
     bs_host_error error;
     bs_host_twin_defaults(&options, 1e-6);
     options.map_count = 1;
-    options.map_frequency[0] = 2000.0; /* short periods: a cheap map */
+    options.map_frequency[0] = 10000.0; /* five steps a period: a cheap map */
     return bs_host_twin_design(scene, &options, gains, &error) != BS_HOST_OK;
 }
 

@@ -16,7 +16,7 @@
  * the same binary on the same inputs, so the same gains bit for bit, without
  * the millions of steps of the maps' sweeps under memcheck (about half of
  * either program's time there). observer_design's own code runs under
- * valgrind in test_host_api, whose design makes a map at 2000 Hz. */
+ * valgrind in test_host_api, whose designs make maps at 10 kHz. */
 #ifndef VG_SHORT_MAPS_H
 #define VG_SHORT_MAPS_H
 
