@@ -84,6 +84,14 @@ endif
 # the link that uses them: in parallel where the compiler can
 LINK_LTO := $(if $(CORE_LTO),$(shell $(CC) -flto=auto -Werror -x c /dev/null -fsyntax-only \
               >/dev/null 2>&1 && echo -flto=auto || echo -flto))
+# The core's -flto objects are optimised once, into $(OBJ)/LTO/core.o, by a
+# partial link that writes plain code (GCC's -flinker-output=nolto-rel): the
+# CLI's link of it is a plain one. A commit changes the revision object the
+# CLI links, and with the -flto objects in its link every commit optimised
+# the core again, about 13 CPU-s a precision of `make test`; the partial link
+# of a fresh build costs about 7 more (docs/testing.md). The same results
+# (fig6's hash) and the same speed (farm-bench: 1.00).
+LTO_UNIT := $(if $(CORE_LTO),$(shell $(CC) -flinker-output=nolto-rel -E -x c /dev/null >/dev/null 2>&1 && echo yes))
 BASE_CFLAGS := -std=c99 -ffp-contract=off -fno-math-errno $(WARNINGS)
 # Core: no libc calls; keep GCC from turning loops into memset/memcpy calls
 # (a GCC flag: other compilers go without; check_core_symbols.sh still checks).
@@ -111,8 +119,11 @@ HOST_CLI_SRC := $(wildcard host/cli/*.c)
 HOST_LIB_SRC := $(foreach w,$(HOST_WINGS),$(wildcard host/lib/$w/*.c)) port/host/bs_platform_host.c
 HOST_HEADERS := $(wildcard host/include/*.h host/lib/*/*.h host/cli/*.h)
 CORE_OBJ := $(CORE_SRC:%.c=$(OBJ)/%.o)
-# what the CLI and the shared library link: the -flto build of the core, or the plain one
-CORE_LINK_OBJ := $(if $(CORE_LTO),$(CORE_SRC:%.c=$(OBJ)/LTO/%.o),$(CORE_OBJ))
+# what the CLI and the shared library link: the -flto build of the core
+# optimised as one unit into one plain object (a partial link, where the
+# compiler can: LTO_UNIT), or its objects, or the plain build
+CORE_LTO_OBJ := $(CORE_SRC:%.c=$(OBJ)/LTO/%.o)
+CORE_LINK_OBJ := $(if $(CORE_LTO),$(if $(LTO_UNIT),$(OBJ)/LTO/core.o,$(CORE_LTO_OBJ)),$(CORE_OBJ))
 HOST_CLI_OBJ := $(HOST_CLI_SRC:%.c=$(OBJ)/%.o)
 HOST_LIB_OBJ := $(HOST_LIB_SRC:%.c=$(OBJ)/%.o)
 HOST_LIBS := -linih -lcjson -lm -pthread
@@ -136,7 +147,10 @@ all: $(OBJ)/beamslider
 endif
 
 $(OBJ)/beamslider: $(HOST_CLI_OBJ) $(HOST_LIB_OBJ) $(CORE_LINK_OBJ)
-	$(CC) $(CFLAGS) $(LINK_LTO) -o $@ $^ $(HOST_LIBS)
+	$(CC) $(CFLAGS) $(if $(LTO_UNIT),,$(LINK_LTO)) -o $@ $^ $(HOST_LIBS)
+
+$(OBJ)/LTO/core.o: $(CORE_LTO_OBJ)
+	$(CC) $(CFLAGS) $(LINK_LTO) -r -flinker-output=nolto-rel -o $@ $^
 
 # The source revision the host tool reports (JSON summaries, --version).
 REVISION := $(shell git describe --always --dirty --abbrev=12 2>/dev/null || echo unknown)
