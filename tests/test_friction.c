@@ -43,19 +43,31 @@ static void load_fig6(void)
     designed = 1;
 }
 
+/* The commissioned twin's observer options (docs/twin.md): an s error
+ * beyond 0.001 corrected at 3 /s, the report's friction gain, the climb
+ * gate at climb [1/s]. */
+static bs_observer_options commissioned(double climb)
+{
+    bs_observer_options options = bs_observer_defaults();
+    options.position_deadband = BS_R(0.001);
+    options.position_gain = BS_R(3.0);
+    options.friction_gain = (bs_real)GAIN;
+    options.friction_climb = (bs_real)climb;
+    return options;
+}
+
 /* The plant (of plant_scene, with friction mu) from s = 0.3 for `before`
  * seconds alone, then a twin of the scene with the scene's friction started
- * from its state and estimating mu for `seconds` more, its climb gate at
- * climb [1/s], while the plant's excitation frequency changes by ramp
+ * from its state and estimating mu for `seconds` more with the observer's
+ * options, while the plant's excitation frequency changes by ramp
  * [Hz/s] (bs_sim_set_excitation every 10 ms). Returns the largest
  * |mu^ - mu_scene| seen; *last the last estimate; *low_sigma (if not NULL)
  * the smallest s_sigma while the twin's amplitude was below h/2 (the low
  * branch), 1 if it never was. */
-static double run_plant(const bs_scene *plant_scene, double mu, double before, double seconds, double climb,
-                        double ramp, bs_observer_estimate *last, double *low_sigma)
+static double run_plant(const bs_scene *plant_scene, double mu, double before, double seconds,
+                        const bs_observer_options *options, double ramp, bs_observer_estimate *last, double *low_sigma)
 {
     const long every = lround(0.01 / (double)scene.dt);
-    bs_observer_options options = bs_observer_defaults();
     bs_real q[BS_MAX_MODES], u[BS_MAX_MODES], slider[3], velocity[3];
     const long alone = lround(before / (double)scene.dt), steps = lround(seconds / (double)scene.dt);
     double worst = 0.0;
@@ -69,11 +81,7 @@ static double run_plant(const bs_scene *plant_scene, double mu, double before, d
     assert_int_equal(bs_sim_get_state(&plant, q, u, slider, velocity), BS_OK);
     assert_int_equal(bs_sim_init(&twin, &scene, BS_MODEL_FREE, slider[0] / scene.length), BS_OK);
     assert_int_equal(bs_sim_set_state(&twin, q, u, slider, velocity), BS_OK);
-    options.position_deadband = BS_R(0.001); /* the commissioned twin's (docs/twin.md) */
-    options.position_gain = BS_R(3.0);
-    options.friction_gain = (bs_real)GAIN;
-    options.friction_climb = (bs_real)climb;
-    assert_int_equal(bs_observer_init(&obs, &twin, &gains, &options), BS_OK);
+    assert_int_equal(bs_observer_init(&obs, &twin, &gains, options), BS_OK);
     support_gaussian_seed(0x9e3779b97f4a7c15u);
     for (k = 1; k <= steps; ++k) {
         double a, y;
@@ -102,7 +110,8 @@ static double run_plant(const bs_scene *plant_scene, double mu, double before, d
 /* run_plant with the scene as the plant and the default climb gate */
 static double run(double mu, double before, double seconds, bs_observer_estimate *last, double *low_sigma)
 {
-    return run_plant(&scene, mu, before, seconds, (double)BS_OBSERVER_DEFAULT_FRICTION_CLIMB, 0.0, last, low_sigma);
+    const bs_observer_options options = commissioned((double)BS_OBSERVER_DEFAULT_FRICTION_CLIMB);
+    return run_plant(&scene, mu, before, seconds, &options, 0.0, last, low_sigma);
 }
 
 /* A plant with 25 % more friction than the twin, climbing the high branch
@@ -169,12 +178,14 @@ static void test_friction_holds_on_the_low_branch(void **state)
  * (measured: see the message), and this fails. */
 static void test_friction_holds_on_the_plateau(void **state)
 {
+    const bs_observer_options with_gate = commissioned((double)BS_OBSERVER_DEFAULT_FRICTION_CLIMB);
+    const bs_observer_options without = commissioned(0.0);
     bs_observer_estimate e;
     double gated, open;
     (void)state;
     load_fig6();
-    gated = run_plant(&stiffer, (double)scene.mu, 25.0, 10.0, (double)BS_OBSERVER_DEFAULT_FRICTION_CLIMB, 0.0, &e, NULL);
-    open = run_plant(&stiffer, (double)scene.mu, 25.0, 10.0, 0.0, 0.0, &e, NULL);
+    gated = run_plant(&stiffer, (double)scene.mu, 25.0, 10.0, &with_gate, 0.0, &e, NULL);
+    open = run_plant(&stiffer, (double)scene.mu, 25.0, 10.0, &without, 0.0, &e, NULL);
     print_message("plateau, frequencies +2 %%: mu^ at most %.5f from %.4f with the climb gate, %.5f without\n", gated,
                   (double)scene.mu, open);
     assert_true(gated <= 0.01 * (double)scene.mu);
@@ -190,18 +201,42 @@ static void test_friction_holds_on_the_plateau(void **state)
  * by 0.023 (11 %; measured with STEADY_FREQUENCY 1000) and this fails. */
 static void test_friction_holds_while_the_frequency_moves(void **state)
 {
+    const bs_observer_options options = commissioned((double)BS_OBSERVER_DEFAULT_FRICTION_CLIMB);
     bs_observer_estimate e;
     double ramped, steady;
     (void)state;
     load_fig6();
-    steady = run_plant(&scene, 1.25 * (double)scene.mu, 20.0, 6.0, (double)BS_OBSERVER_DEFAULT_FRICTION_CLIMB, 0.0,
-                       &e, NULL);
-    ramped = run_plant(&scene, 1.25 * (double)scene.mu, 20.0, 6.0, (double)BS_OBSERVER_DEFAULT_FRICTION_CLIMB, 0.2,
-                       &e, NULL);
+    steady = run_plant(&scene, 1.25 * (double)scene.mu, 20.0, 6.0, &options, 0.0, &e, NULL);
+    ramped = run_plant(&scene, 1.25 * (double)scene.mu, 20.0, 6.0, &options, 0.2, &e, NULL);
     print_message("plant mu +25 %%, 6 s: mu^ at most %.5f from %.4f under a ramp of +0.2 Hz/s, %.5f steady\n", ramped,
                   (double)scene.mu, steady);
     assert_true(ramped <= 0.005 * (double)scene.mu);
     assert_true(steady > 0.025 * (double)scene.mu); /* a case the gate decides */
+}
+
+/* A strong s correction (10 /s, at most 0.02 /s: docs/twin.md, "The
+ * shadow") keeps the twin on the plant with 25 % more friction of the
+ * first test and leaves the estimate little lag to read: over the same 12 s
+ * mu^ moves less far (measured: see the message; at 3 /s, the first test,
+ * 0.2359). Reading a shadow corrected at 3 /s it moves at least a third of
+ * the way, as there, and further than without it. */
+static void test_friction_reads_a_shadow_under_a_strong_correction(void **state)
+{
+    const double mu = 1.25 * (double)scene.mu;
+    bs_observer_options options = commissioned((double)BS_OBSERVER_DEFAULT_FRICTION_CLIMB);
+    bs_observer_estimate strong, shadowed;
+    (void)state;
+    load_fig6();
+    options.position_gain = BS_R(10.0);
+    options.position_rate = BS_R(0.02);
+    run_plant(&scene, mu, 20.0, 12.0, &options, 0.0, &strong, NULL);
+    options.friction_shadow = BS_R(3.0);
+    run_plant(&scene, mu, 20.0, 12.0, &options, 0.0, &shadowed, NULL);
+    print_message("plant mu %.4f, s corrected at 10 /s: mu^ after 12 s %.4f, with a shadow at 3 /s %.4f\n", mu,
+                  (double)strong.mu, (double)shadowed.mu);
+    assert_true((double)shadowed.mu > (double)scene.mu + (mu - (double)scene.mu) / 3.0);
+    assert_true((double)shadowed.mu < 1.5 * (double)scene.mu);
+    assert_true((double)strong.mu < (double)shadowed.mu);
 }
 
 /* The estimate resumes from a checkpoint: the sim's checkpoint holds mu^
@@ -252,7 +287,7 @@ static void test_friction_resumes_and_refuses_what_is_out_of_range(void **state)
     assert_true(fabs((double)(sigma - BS_R(0.25) * prior)) <= 1e-4 * (double)prior);
 
     /* options: a negative gain, a time of 0, a negative deadband, a sigma of 0,
-     * a negative amplitude, a negative climb rate */
+     * a negative amplitude, a negative climb rate, a negative or NaN shadow gain */
     options.friction_gain = BS_R(-1.0);
     assert_int_equal(bs_observer_init(&resumed, &copy, &gains, &options), BS_E_ARGUMENT);
     options.friction_gain = BS_R(1.0);
@@ -270,6 +305,11 @@ static void test_friction_resumes_and_refuses_what_is_out_of_range(void **state)
     options.friction_amplitude = BS_R(0.5);
     options.friction_climb = BS_R(-0.001);
     assert_int_equal(bs_observer_init(&resumed, &copy, &gains, &options), BS_E_ARGUMENT);
+    options.friction_climb = BS_R(0.001);
+    options.friction_shadow = BS_R(-3.0);
+    assert_int_equal(bs_observer_init(&resumed, &copy, &gains, &options), BS_E_ARGUMENT);
+    options.friction_shadow = (bs_real)NAN;
+    assert_int_equal(bs_observer_init(&resumed, &copy, &gains, &options), BS_E_ARGUMENT);
 }
 
 int main(void)
@@ -281,6 +321,7 @@ int main(void)
         cmocka_unit_test(test_friction_holds_on_the_low_branch),
         cmocka_unit_test(test_friction_holds_on_the_plateau),
         cmocka_unit_test(test_friction_holds_while_the_frequency_moves),
+        cmocka_unit_test(test_friction_reads_a_shadow_under_a_strong_correction),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -138,6 +138,12 @@ typedef struct bs_observer_options {
     bs_real friction_climb;  /* ... and while the measured s moves at least this fast (the plant
                                 climbing the high branch; its rate low-passed over 1 s) [1/s],
                                 >= 0 */
+    bs_real friction_shadow; /* 0: the estimate reads the twin's s error; > 0: that of a shadow
+                                of the twin's slider, which moves with the twin's own drift and
+                                is corrected at this gain (with position_deadband and
+                                position_rate), so that a strong position_gain, which keeps the
+                                twin on the plant, does not take away the lag the estimate reads
+                                (docs/twin.md, "The shadow") [1/s], >= 0 */
     bs_real jump_hold;       /* no s correction (and so no friction learning) for this long after
                                 the measured response starts falling fast from the high branch
                                 (the twin's amplitude above h/2; a jump to the low branch under
@@ -163,6 +169,7 @@ typedef struct bs_observer_options {
 #define BS_OBSERVER_DEFAULT_FRICTION_SIGMA 0.002
 #define BS_OBSERVER_DEFAULT_FRICTION_AMPLITUDE 0.5
 #define BS_OBSERVER_DEFAULT_FRICTION_CLIMB 0.001
+#define BS_OBSERVER_DEFAULT_FRICTION_SHADOW 0.0
 #define BS_OBSERVER_DEFAULT_JUMP_HOLD 0.0
 /* The friction estimate stays within [1 - range, 1 + range] times the
  * scene's mu (twice the +-25 % a plant is drawn with in the twin report). */
@@ -232,6 +239,7 @@ typedef struct bs_observer {
     bs_real climb_s;                                  /* the measured s at the last update on the
                                                          high branch (-1: none) (8) */
     bs_real climb_rate;                               /* its rate, low-passed over 1 s [1/s] */
+    bs_real shadow_s;                                 /* the shadow's s (friction_shadow > 0) (8) */
     bs_real frequency_mean;                           /* the measured excitation's frequency,
                                                          low-passed over 1 s (0: none yet) (8) [Hz] */
     bs_observer_estimate estimate;

@@ -118,6 +118,15 @@
  *    the range shrunk by the time spent learning, plus what the persistent
  *    error left says (FRICTION_SENSITIVITY, fig6's s error per unit of
  *    relative friction error); a figure of merit, not a posterior.
+ *    The estimate reads the lag a twin with the wrong mu builds up while the
+ *    correction (5) pulls it along: a strong position_gain keeps the twin
+ *    on the plant and leaves little lag to read. With friction_shadow > 0
+ *    it reads a shadow's instead: an s that moves with the twin's own drift
+ *    (what its mu makes of the slider, not the correction) and is
+ *    corrected as in 5 but at friction_shadow:
+ *      s_shadow += ds_own + rate(friction_shadow, s + s_error - s_shadow) dt,
+ *    the error it reads s + s_error - s_shadow. At friction_shadow =
+ *    position_gain the shadow is the twin's s (but for rounding).
  * A step without a measurement (bs_observer_predict: a sample lost on the
  * way, e.g. a firmware's FIFO overrun) does all but what needs y: no beam
  * correction (3), and of the lock-in (4) only the reference and the twin's
@@ -196,6 +205,7 @@ bs_observer_options bs_observer_defaults(void)
     o.friction_sigma = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_SIGMA;
     o.friction_amplitude = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_AMPLITUDE;
     o.friction_climb = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_CLIMB;
+    o.friction_shadow = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_SHADOW;
     o.jump_hold = (bs_real)BS_OBSERVER_DEFAULT_JUMP_HOLD;
     return o;
 }
@@ -218,7 +228,8 @@ static int valid_options(const bs_observer_options *o)
            && finite(o->friction_time) && o->friction_time > BS_R(0.0) && finite(o->friction_deadband)
            && o->friction_deadband >= BS_R(0.0) && finite(o->friction_sigma) && o->friction_sigma > BS_R(0.0)
            && finite(o->friction_amplitude) && o->friction_amplitude >= BS_R(0.0) && finite(o->friction_climb)
-           && o->friction_climb >= BS_R(0.0) && finite(o->jump_hold) && o->jump_hold >= BS_R(0.0);
+           && o->friction_climb >= BS_R(0.0) && finite(o->friction_shadow) && o->friction_shadow >= BS_R(0.0)
+           && finite(o->jump_hold) && o->jump_hold >= BS_R(0.0);
 }
 
 /* Map m + 1 is made at map m's excitation (at another mu). */
@@ -321,6 +332,15 @@ static bs_real friction_prior(const bs_observer *obs)
 }
 
 /* The persistent s error beyond the deadband (0 within it). */
+/* 8: the s error the estimate reads: the twin's own, or with a shadow the
+ * measured s (the twin's and its error) less the shadow's */
+static bs_real shadow_error(const bs_observer *obs)
+{
+    if (!(obs->options.friction_shadow > BS_R(0.0)))
+        return obs->estimate.s_error;
+    return obs->estimate.s + obs->estimate.s_error - obs->shadow_s;
+}
+
 static bs_real friction_drive(const bs_observer *obs)
 {
     const bs_real band = obs->options.friction_deadband, p = obs->friction_persist;
@@ -384,6 +404,7 @@ bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer
     obs->options.friction_sigma = options->friction_sigma;
     obs->options.friction_amplitude = options->friction_amplitude;
     obs->options.friction_climb = options->friction_climb;
+    obs->options.friction_shadow = options->friction_shadow;
     obs->options.jump_hold = options->jump_hold;
     obs->friction_persist = BS_R(0.0);
     obs->friction_learnt = BS_R(0.0);
@@ -391,6 +412,7 @@ bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer
     obs->climb_rate = BS_R(0.0);
     obs->frequency_mean = BS_R(0.0);
     obs->drift_s = bs_sim_position(sim);
+    obs->shadow_s = obs->drift_s;
     obs->drift_lag[0] = obs->drift_lag[1] = BS_R(0.0);
     obs->steps = 0;
     obs->head = 0;
@@ -806,8 +828,12 @@ static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
     int mirror, map;
 
     est->s = bs_sim_position(sim);
-    if (bs_fabs(est->s - obs->drift_s) <= DRIFT_JUMP)
+    if (bs_fabs(est->s - obs->drift_s) <= DRIFT_JUMP) {
         follow_drift(obs, est->s - obs->drift_s);
+        obs->shadow_s += est->s - obs->drift_s; /* 8: the shadow drifts as the twin does */
+    } else {
+        obs->shadow_s = est->s; /* a state set from outside: the shadow starts again there */
+    }
     obs->drift_s = est->s;
     est->power = bs_lowpass2_mean(&obs->power);
     est->s_sigma = SIGMA_UNKNOWN;
@@ -873,28 +899,41 @@ static void move_slider(bs_sim *sim, bs_real ds)
     add_compensated(&sim->slider[0], &sim->x_c_low, target - x);
 }
 
-/* Moves x_C by the correction over interval [s] (the time since the last). */
-static void correct_position(bs_observer *obs, bs_sim *sim, bs_real interval)
+/* 5: the correction's speed [1/s] for an s error at gain [1/s]: what of
+ * the error is beyond position_deadband, within position_rate; 0 within the
+ * deadband. */
+static bs_real correction_rate(const bs_observer_options *o, bs_real gain, bs_real error)
 {
-    const bs_observer_options *o = &obs->options;
-    bs_real rate, error;
-    if (!o->correct_position || (bs_real)obs->steps * sim->scene->dt < o->settle_time
-        || !(obs->estimate.s_sigma < o->sigma_hold))
-        return;
-    error = obs->estimate.s_error;
+    bs_real rate;
     if (error > o->position_deadband)
         error -= o->position_deadband;
     else if (error < -o->position_deadband)
         error += o->position_deadband;
     else
-        return;
-    rate = o->position_gain * error;
+        return BS_R(0.0);
+    rate = gain * error;
     if (rate > o->position_rate)
         rate = o->position_rate;
     if (rate < -o->position_rate)
         rate = -o->position_rate;
-    move_slider(sim, rate * interval);
-    obs->drift_s = bs_sim_position(sim); /* the correction is no drift */
+    return rate;
+}
+
+/* Moves x_C by the correction over interval [s] (the time since the last),
+ * and the shadow (8) by its own. */
+static void correct_position(bs_observer *obs, bs_sim *sim, bs_real interval)
+{
+    const bs_observer_options *o = &obs->options;
+    const bs_real error = obs->estimate.s_error;
+    if (!o->correct_position || (bs_real)obs->steps * sim->scene->dt < o->settle_time
+        || !(obs->estimate.s_sigma < o->sigma_hold))
+        return;
+    if (o->friction_shadow > BS_R(0.0))
+        obs->shadow_s += correction_rate(o, o->friction_shadow, shadow_error(obs)) * interval;
+    if (error > o->position_deadband || error < -o->position_deadband) {
+        move_slider(sim, correction_rate(o, o->position_gain, error) * interval);
+        obs->drift_s = bs_sim_position(sim); /* the correction is no drift */
+    }
 }
 
 /* 8: the measured s's rate, low-passed over CLIMB_TIME, while it is
@@ -950,7 +989,7 @@ static void estimate_friction(bs_observer *obs, bs_sim *sim, bs_real interval)
     follow_climb(obs, interval);
     if (!(bs_fabs(obs->climb_rate) >= o->friction_climb))
         return;
-    obs->friction_persist += interval / o->friction_time * (obs->estimate.s_error - obs->friction_persist);
+    obs->friction_persist += interval / o->friction_time * (shadow_error(obs) - obs->friction_persist);
     obs->friction_learnt += interval;
     mu = sim->k.mu - o->friction_gain * mu_scene * friction_drive(obs) * interval;
     mu = mu < low ? low : mu > high ? high : mu;
