@@ -90,7 +90,8 @@ LINK_LTO := $(if $(CORE_LTO),$(shell $(CC) -flto=auto -Werror -x c /dev/null -fs
 # CLI links, and with the -flto objects in its link every commit optimised
 # the core again, about 13 CPU-s a precision of `make test`; the partial link
 # of a fresh build costs about 7 more (docs/testing.md). The same results
-# (fig6's hash) and the same speed (farm-bench: 1.00).
+# (fig6's hash) and speed within the noise of paired runs (farm-bench, fig6 in
+# double: the full -flto link took 0.98 and 1.01 of its CPU time in two series).
 LTO_UNIT := $(if $(CORE_LTO),$(shell $(CC) -flinker-output=nolto-rel -E -x c /dev/null >/dev/null 2>&1 && echo yes))
 BASE_CFLAGS := -std=c99 -ffp-contract=off -fno-math-errno $(WARNINGS)
 # Core: no libc calls; keep GCC from turning loops into memset/memcpy calls
