@@ -239,7 +239,7 @@ typedef struct bs_observer {
     bs_real climb_s;                                  /* the measured s at the last update on the
                                                          high branch (-1: none) (8) */
     bs_real climb_rate;                               /* its rate, low-passed over 1 s [1/s] */
-    bs_real shadow_s;                                 /* the shadow's s (friction_shadow > 0) (8) */
+    bs_real shadow_s;                                 /* the shadow's s, read with friction_shadow > 0 (8) */
     bs_real frequency_mean;                           /* the measured excitation's frequency,
                                                          low-passed over 1 s (0: none yet) (8) [Hz] */
     bs_observer_estimate estimate;

@@ -331,7 +331,6 @@ static bs_real friction_prior(const bs_observer *obs)
     return (bs_real)BS_OBSERVER_FRICTION_RANGE * INV_SQRT3 * obs->sim->scene->mu;
 }
 
-/* The persistent s error beyond the deadband (0 within it). */
 /* 8: the s error the estimate reads: the twin's own, or with a shadow the
  * measured s (the twin's and its error) less the shadow's */
 static bs_real shadow_error(const bs_observer *obs)
@@ -341,6 +340,7 @@ static bs_real shadow_error(const bs_observer *obs)
     return obs->estimate.s + obs->estimate.s_error - obs->shadow_s;
 }
 
+/* The persistent s error beyond the deadband (0 within it). */
 static bs_real friction_drive(const bs_observer *obs)
 {
     const bs_real band = obs->options.friction_deadband, p = obs->friction_persist;
