@@ -93,6 +93,8 @@ LINK_LTO := $(if $(CORE_LTO),$(shell $(CC) -flto=auto -Werror -x c /dev/null -fs
 # (fig6's hash) and speed within the noise of paired runs (farm-bench, fig6 in
 # double: the full -flto link took 0.98 and 1.01 of its CPU time in two series).
 LTO_UNIT := $(if $(CORE_LTO),$(shell $(CC) -flinker-output=nolto-rel -E -x c /dev/null >/dev/null 2>&1 && echo yes))
+# what a link of CORE_LINK_OBJ adds: nothing for the partial link's plain object
+CORE_LINK_FLAGS := $(if $(LTO_UNIT),,$(LINK_LTO))
 BASE_CFLAGS := -std=c99 -ffp-contract=off -fno-math-errno $(WARNINGS)
 # Core: no libc calls; keep GCC from turning loops into memset/memcpy calls
 # (a GCC flag: other compilers go without; check_core_symbols.sh still checks).
@@ -148,7 +150,7 @@ all: $(OBJ)/beamslider
 endif
 
 $(OBJ)/beamslider: $(HOST_CLI_OBJ) $(HOST_LIB_OBJ) $(CORE_LINK_OBJ)
-	$(CC) $(CFLAGS) $(if $(LTO_UNIT),,$(LINK_LTO)) -o $@ $^ $(HOST_LIBS)
+	$(CC) $(CFLAGS) $(CORE_LINK_FLAGS) -o $@ $^ $(HOST_LIBS)
 
 $(OBJ)/LTO/core.o: $(CORE_LTO_OBJ)
 	$(CC) $(CFLAGS) $(LINK_LTO) -r -flinker-output=nolto-rel -o $@ $^

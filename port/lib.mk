@@ -110,7 +110,7 @@ $(LIB_DIR)/libbeamslider-host-$(REAL).a: $(HOST_LIB_OBJ)
 # release may change the API.
 $(LIB_DIR)/libbeamslider-host-$(REAL).so.$(VERSION): $(HOST_LIB_OBJ) $(CORE_LINK_OBJ) port/libbeamslider-host.map
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) $(if $(LTO_UNIT),,$(LINK_LTO)) -shared -Wl,-soname,libbeamslider-host-$(REAL).so.$(VERSION_MINOR) \
+	$(CC) $(CFLAGS) $(CORE_LINK_FLAGS) -shared -Wl,-soname,libbeamslider-host-$(REAL).so.$(VERSION_MINOR) \
 	    -Wl,--version-script=port/libbeamslider-host.map -Wl,-z,defs -o $@ $(HOST_LIB_OBJ) $(CORE_LINK_OBJ) $(HOST_LIBS)
 
 # ---- install ------------------------------------------------------------------
