@@ -144,6 +144,11 @@ typedef struct bs_observer_options {
                                 position_rate), so that a strong position_gain, which keeps the
                                 twin on the plant, does not take away the lag the estimate reads
                                 (docs/twin.md, "The shadow") [1/s], >= 0 */
+    bs_real friction_walk;   /* 0: mu follows the persistent s error; > 0: the exponent k of the
+                                slider's walking speed in mu on the high branch (v ~ mu^-k),
+                                and mu follows the twin's own walking speed against the
+                                measured one, at friction_gain [1/s] (docs/twin.md, "The
+                                walk") [1], >= 0 */
     bs_real jump_hold;       /* no s correction (and so no friction learning) for this long after
                                 the measured response starts falling fast from the high branch
                                 (the twin's amplitude above h/2; a jump to the low branch under
@@ -170,6 +175,7 @@ typedef struct bs_observer_options {
 #define BS_OBSERVER_DEFAULT_FRICTION_AMPLITUDE 0.5
 #define BS_OBSERVER_DEFAULT_FRICTION_CLIMB 0.001
 #define BS_OBSERVER_DEFAULT_FRICTION_SHADOW 0.0
+#define BS_OBSERVER_DEFAULT_FRICTION_WALK 0.0
 #define BS_OBSERVER_DEFAULT_JUMP_HOLD 0.0
 /* The friction estimate stays within [1 - range, 1 + range] times the
  * scene's mu (twice the +-25 % a plant is drawn with in the twin report). */
@@ -234,12 +240,19 @@ typedef struct bs_observer {
     bs_real drift_s;                                  /* the twin's s after the last position update */
     bs_real drift_lag[2];                             /* its own drift less that through one and two
                                                          of the lock-in's stages (5) */
-    bs_real friction_persist;                         /* the s error low-passed over friction_time */
+    bs_real friction_persist;                         /* the s error low-passed over friction_time
+                                                         (the walk: its last ln(mu_plant / mu^)) */
     bs_real friction_learnt;                          /* time spent learning mu [s] */
     bs_real climb_s;                                  /* the measured s at the last update on the
                                                          high branch (-1: none) (8) */
     bs_real climb_rate;                               /* its rate, low-passed over 1 s [1/s] */
     bs_real shadow_s;                                 /* the shadow's s, read with friction_shadow > 0 (8) */
+    bs_real own_ds;                                   /* the twin's own drift since the last
+                                                         friction update (8) */
+    bs_real walk_rate, own_rate;                      /* the measured s's rate and the twin's own,
+                                                         low-passed over 1 s from 0 at the climb's
+                                                         start (8, the walk) [1/s] */
+    bs_real walk_peak;                                /* the largest abs(walk_rate) of this climb */
     bs_real frequency_mean;                           /* the measured excitation's frequency,
                                                          low-passed over 1 s (0: none yet) (8) [Hz] */
     bs_observer_estimate estimate;

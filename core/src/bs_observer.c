@@ -127,6 +127,21 @@
  *      s_shadow += ds_own + rate(friction_shadow, s + s_error - s_shadow) dt,
  *    the error it reads s + s_error - s_shadow. At friction_shadow =
  *    position_gain the shadow is the twin's s (but for rounding).
+ *    The walk (friction_walk = k > 0; docs/twin.md, "The walk"): the
+ *    slider walks up the high branch at a speed that goes as mu^-k (k ~ 4
+ *    on fig6 and fig8), so the twin's own walking speed v_t (its drift, the
+ *    correction left out) against the measured v_p (the rate of s +
+ *    s_error), both low-passed over CLIMB_TIME from 0 at the climb's start,
+ *    gives mu_plant / mu^ = (v_t / v_p)^(1/k) without waiting for a lag to
+ *    build up:
+ *      dmu/dt = friction_gain mu^ 2 (v_t - v_p) / (k (v_t + v_p))
+ *                 / (1 + learnt / WALK_LEARN_REF)
+ *    (the logarithm of the ratio over k, as a bounded rational; learnt the
+ *    time spent learning, so that later climbs average), under the
+ *    gates above and only while both walk the same way at friction_climb
+ *    or faster and v_p is at least CLIMB_PEAK_PART of its fastest in this
+ *    climb (toward the plateau the plateau's place, which the model's
+ *    frequencies set as much as mu, rules both speeds).
  * A step without a measurement (bs_observer_predict: a sample lost on the
  * way, e.g. a firmware's FIFO overrun) does all but what needs y: no beam
  * correction (3), and of the lock-in (4) only the reference and the twin's
@@ -154,8 +169,18 @@
  * persistent s error per unit of relative friction error (fig6). */
 #define FRICTION_LEARN_REF BS_R(2.0)
 #define FRICTION_SENSITIVITY BS_R(0.01)
-/* the time constant of the measured s's rate for the climb gate (8) [s] */
+/* the time constant of the measured s's rate for the climb gate, and of
+ * the walk's two speeds (8) [s] */
 #define CLIMB_TIME BS_R(1.0)
+/* 8, the walk: learnt only while the plant climbs at this part of its
+ * fastest so far in this climb: where it slows toward its plateau, the
+ * plateau's place (which the model's frequencies set as much as mu) rules
+ * both speeds */
+#define CLIMB_PEAK_PART BS_R(0.5)
+/* 8, the walk: the learning time over which its gain halves [s]: the
+ * first climb moves mu^ at the full gain, later ones average what they
+ * read (each climb's reading scatters by several per cent: fig8) */
+#define WALK_LEARN_REF BS_R(10.0)
 /* 8: the excitation is steady while its measured frequency stays within
  * this part of its own mean over STEADY_TIME [s]: a ramp of r Hz/s lags
  * that mean by r STEADY_TIME, so 0.1 % a second or more closes the gate */
@@ -206,6 +231,7 @@ bs_observer_options bs_observer_defaults(void)
     o.friction_amplitude = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_AMPLITUDE;
     o.friction_climb = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_CLIMB;
     o.friction_shadow = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_SHADOW;
+    o.friction_walk = (bs_real)BS_OBSERVER_DEFAULT_FRICTION_WALK;
     o.jump_hold = (bs_real)BS_OBSERVER_DEFAULT_JUMP_HOLD;
     return o;
 }
@@ -229,6 +255,7 @@ static int valid_options(const bs_observer_options *o)
            && o->friction_deadband >= BS_R(0.0) && finite(o->friction_sigma) && o->friction_sigma > BS_R(0.0)
            && finite(o->friction_amplitude) && o->friction_amplitude >= BS_R(0.0) && finite(o->friction_climb)
            && o->friction_climb >= BS_R(0.0) && finite(o->friction_shadow) && o->friction_shadow >= BS_R(0.0)
+           && finite(o->friction_walk) && o->friction_walk >= BS_R(0.0)
            && finite(o->jump_hold) && o->jump_hold >= BS_R(0.0);
 }
 
@@ -350,7 +377,9 @@ static bs_real friction_drive(const bs_observer *obs)
 static bs_real friction_sigma(const bs_observer *obs)
 {
     const bs_real prior = friction_prior(obs);
-    const bs_real left = obs->sim->scene->mu * friction_drive(obs) / FRICTION_SENSITIVITY;
+    const bs_real left = obs->options.friction_walk > BS_R(0.0)
+                             ? obs->sim->k.mu * obs->friction_persist
+                             : obs->sim->scene->mu * friction_drive(obs) / FRICTION_SENSITIVITY;
     if (!(obs->options.friction_gain > BS_R(0.0)))
         return BS_R(0.0);
     return bs_sqrt(prior * prior / (BS_R(1.0) + obs->friction_learnt / FRICTION_LEARN_REF) + left * left);
@@ -405,11 +434,13 @@ bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer
     obs->options.friction_amplitude = options->friction_amplitude;
     obs->options.friction_climb = options->friction_climb;
     obs->options.friction_shadow = options->friction_shadow;
+    obs->options.friction_walk = options->friction_walk;
     obs->options.jump_hold = options->jump_hold;
     obs->friction_persist = BS_R(0.0);
     obs->friction_learnt = BS_R(0.0);
     obs->climb_s = BS_R(-1.0);
     obs->climb_rate = BS_R(0.0);
+    obs->own_ds = obs->own_rate = obs->walk_rate = obs->walk_peak = BS_R(0.0);
     obs->frequency_mean = BS_R(0.0);
     obs->drift_s = bs_sim_position(sim);
     obs->shadow_s = obs->drift_s;
@@ -831,6 +862,7 @@ static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
     if (bs_fabs(est->s - obs->drift_s) <= DRIFT_JUMP) {
         follow_drift(obs, est->s - obs->drift_s);
         obs->shadow_s += est->s - obs->drift_s; /* 8: the shadow drifts as the twin does */
+        obs->own_ds += est->s - obs->drift_s;
     } else {
         obs->shadow_s = est->s; /* a state set from outside: the shadow starts again there */
     }
@@ -941,9 +973,37 @@ static void correct_position(bs_observer *obs, bs_sim *sim, bs_real interval)
 static void follow_climb(bs_observer *obs, bs_real interval)
 {
     const bs_real measured = obs->estimate.s + obs->estimate.s_error;
-    if (obs->climb_s >= BS_R(0.0))
-        obs->climb_rate += interval / CLIMB_TIME * ((measured - obs->climb_s) / interval - obs->climb_rate);
+    if (obs->climb_s >= BS_R(0.0)) {
+        const bs_real rate = (measured - obs->climb_s) / interval;
+        obs->climb_rate += interval / CLIMB_TIME * (rate - obs->climb_rate);
+        obs->walk_rate += interval / CLIMB_TIME * (rate - obs->walk_rate);
+        obs->own_rate += interval / CLIMB_TIME * (obs->own_ds / interval - obs->own_rate);
+        if (bs_fabs(obs->walk_rate) > obs->walk_peak)
+            obs->walk_peak = bs_fabs(obs->walk_rate);
+    } else { /* the walk's rates start again from 0 alike: their ratio holds from the start */
+        obs->walk_rate = obs->own_rate = obs->walk_peak = BS_R(0.0);
+    }
     obs->climb_s = measured;
+    obs->own_ds = BS_R(0.0);
+}
+
+/* 8, the walk: whether both walk the same way at friction_climb or faster,
+ * the plant at CLIMB_PEAK_PART of its fastest in this climb or more. */
+static int walking(const bs_observer *obs)
+{
+    const bs_real v_t = obs->own_rate, v_p = obs->walk_rate, climb = obs->options.friction_climb;
+    return v_t * v_p > BS_R(0.0) && bs_fabs(v_t) >= climb && bs_fabs(v_p) >= climb
+           && bs_fabs(v_p) >= CLIMB_PEAK_PART * obs->walk_peak;
+}
+
+/* 8, the walk: ln(mu_plant / mu^) from the twin's own walking speed v_t and
+ * the measured v_p (v ~ mu^-k: ln(v_t / v_p) = k ln(mu_plant / mu^)), the
+ * logarithm as 2 (v_t - v_p) / (v_t + v_p): within 2 % of it for speeds
+ * within 30 % of each other, and bounded by 2 beyond. */
+static bs_real walk_error(const bs_observer *obs)
+{
+    const bs_real v_t = obs->own_rate, v_p = obs->walk_rate;
+    return BS_R(2.0) * (v_t - v_p) / (obs->options.friction_walk * (v_t + v_p));
 }
 
 /* 8: whether the excitation's measured frequency holds still: its mean
@@ -989,9 +1049,17 @@ static void estimate_friction(bs_observer *obs, bs_sim *sim, bs_real interval)
     follow_climb(obs, interval);
     if (!(bs_fabs(obs->climb_rate) >= o->friction_climb))
         return;
-    obs->friction_persist += interval / o->friction_time * (shadow_error(obs) - obs->friction_persist);
+    if (o->friction_walk > BS_R(0.0) && !walking(obs))
+        return;
+    if (o->friction_walk > BS_R(0.0)) {
+        const bs_real slowing = BS_R(1.0) + obs->friction_learnt / WALK_LEARN_REF;
+        obs->friction_persist = walk_error(obs);
+        mu = sim->k.mu * (BS_R(1.0) + o->friction_gain * obs->friction_persist * interval / slowing);
+    } else {
+        obs->friction_persist += interval / o->friction_time * (shadow_error(obs) - obs->friction_persist);
+        mu = sim->k.mu - o->friction_gain * mu_scene * friction_drive(obs) * interval;
+    }
     obs->friction_learnt += interval;
-    mu = sim->k.mu - o->friction_gain * mu_scene * friction_drive(obs) * interval;
     mu = mu < low ? low : mu > high ? high : mu;
     (void)bs_sim_set_contact_laws(sim, mu, sim->k.e_n); /* within the range: accepted */
     obs->estimate.mu = sim->k.mu;

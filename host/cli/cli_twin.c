@@ -35,8 +35,8 @@ const char cli_twin_synopsis[] =
     "        [--position-rate R] [--deadband D] [--outlier-gate K] [--score-after T] [--tolerance D]\n"
     "        [--map-frequencies F,F,...] [--map-frictions MU,MU,...] [--friction MU] [--restitution E]\n"
     "        [--estimate-friction K] [--friction-time T] [--friction-deadband D] [--friction-sigma S]\n"
-    "        [--friction-amplitude A] [--friction-climb R] [--friction-shadow G] [--jump-hold T]\n"
-    "        [--set section.key=value ...]";
+    "        [--friction-amplitude A] [--friction-climb R] [--friction-shadow G] [--friction-walk K]\n"
+    "        [--jump-hold T] [--set section.key=value ...]";
 const char cli_twin_help[] =
     "  the twin corrected from measured signals (docs/twin.md, \"Observer\")\n"
     "  Runs the scene on the measured base acceleration, corrected from the measured signal; EST.csv every N steps: t,\n"
@@ -61,6 +61,9 @@ const char cli_twin_help[] =
     "  and the excitation's frequency holds still (within 0.1 % of its mean over 1 s: not in a ramp).\n"
     "  --friction-shadow G: the estimate reads the s error of a shadow of the slider corrected at G [1/s]\n"
     "  instead of the twin's (default 0: the twin's; docs/twin.md, \"The shadow\").\n"
+    "  --friction-walk K: mu follows the twin's own walking speed against the measured one, taking the\n"
+    "  speed as mu^-K; --estimate-friction is then the law's rate [1/s] (default 0: the s error;\n"
+    "  docs/twin.md, \"The walk\").\n"
     "  --jump-hold T: no s correction for T seconds after the measured response starts falling fast (a jump\n"
     "  to the low branch; default 0: none; docs/twin.md, \"Jump hold\").\n";
 
@@ -107,6 +110,7 @@ typedef struct twin_cli {
     double score_after, tolerance;
     double mu, e_n, friction_gain; /* NAN: the scene's; 0: no estimate */
     double friction_time, friction_deadband, friction_sigma, friction_amplitude, friction_climb, friction_shadow;
+    double friction_walk;
     double jump_hold;
 } twin_cli;
 
@@ -164,6 +168,7 @@ static void cli_defaults(twin_cli *c)
     c->friction_amplitude = BS_OBSERVER_DEFAULT_FRICTION_AMPLITUDE;
     c->friction_climb = BS_OBSERVER_DEFAULT_FRICTION_CLIMB;
     c->friction_shadow = BS_OBSERVER_DEFAULT_FRICTION_SHADOW;
+    c->friction_walk = BS_OBSERVER_DEFAULT_FRICTION_WALK;
     c->jump_hold = BS_OBSERVER_DEFAULT_JUMP_HOLD;
 }
 
@@ -248,6 +253,7 @@ static int parse_valued(twin_cli *c, const char *option, const char *value)
     else if (!strcmp(option, "--friction-amplitude")) return parse_number(option, value, 0.0, 100.0, &c->friction_amplitude);
     else if (!strcmp(option, "--friction-climb")) return parse_number(option, value, 0.0, 1.0, &c->friction_climb);
     else if (!strcmp(option, "--friction-shadow")) return parse_number(option, value, 0.0, 1e3, &c->friction_shadow);
+    else if (!strcmp(option, "--friction-walk")) return parse_number(option, value, 0.0, 1e3, &c->friction_walk);
     else if (!strcmp(option, "--jump-hold")) return parse_number(option, value, 0.0, 1e3, &c->jump_hold);
     else if (!strcmp(option, "--bits") || !strcmp(option, "--every") || !strcmp(option, "--seed")) {
         if (parse_number(option, value, !strcmp(option, "--every") ? 1.0 : 0.0,
@@ -480,6 +486,7 @@ static twin_run_options run_options(const twin_cli *c)
     o.observer.friction_amplitude = (bs_real)c->friction_amplitude;
     o.observer.friction_climb = (bs_real)c->friction_climb;
     o.observer.friction_shadow = (bs_real)c->friction_shadow;
+    o.observer.friction_walk = (bs_real)c->friction_walk;
     o.observer.jump_hold = (bs_real)c->jump_hold;
     o.mu = c->mu;
     o.e_n = c->e_n;

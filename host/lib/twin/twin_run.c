@@ -214,6 +214,7 @@ int twin_print_summary(FILE *out, const scene_file *file, const bs_observer_gain
     out_json_number(&j, "friction_amplitude", "%g", (double)o->observer.friction_amplitude);
     out_json_number(&j, "friction_climb", "%g", (double)o->observer.friction_climb);
     out_json_number(&j, "friction_shadow", "%g", (double)o->observer.friction_shadow);
+    out_json_number(&j, "friction_walk", "%g", (double)o->observer.friction_walk);
     out_json_number(&j, "jump_hold", "%g", (double)o->observer.jump_hold);
     out_json_number(&j, "mu_final", "%.6g", (double)tally->last.mu);
     out_json_number(&j, "mu_sigma_final", "%.4g", (double)tally->last.mu_sigma);
