@@ -956,14 +956,15 @@ static bs_real correction_rate(const bs_observer_options *o, bs_real gain, bs_re
 static void correct_position(bs_observer *obs, bs_sim *sim, bs_real interval)
 {
     const bs_observer_options *o = &obs->options;
-    const bs_real error = obs->estimate.s_error;
+    bs_real rate;
     if (!o->correct_position || (bs_real)obs->steps * sim->scene->dt < o->settle_time
         || !(obs->estimate.s_sigma < o->sigma_hold))
         return;
     if (o->friction_shadow > BS_R(0.0))
         obs->shadow_s += correction_rate(o, o->friction_shadow, shadow_error(obs)) * interval;
-    if (error > o->position_deadband || error < -o->position_deadband) {
-        move_slider(sim, correction_rate(o, o->position_gain, error) * interval);
+    rate = correction_rate(o, o->position_gain, obs->estimate.s_error);
+    if (rate != BS_R(0.0)) {
+        move_slider(sim, rate * interval);
         obs->drift_s = bs_sim_position(sim); /* the correction is no drift */
     }
 }
