@@ -862,7 +862,8 @@ static void estimate_position(bs_observer *obs, const bs_sim *sim, bs_real dt)
     if (bs_fabs(est->s - obs->drift_s) <= DRIFT_JUMP) {
         follow_drift(obs, est->s - obs->drift_s);
         obs->shadow_s += est->s - obs->drift_s; /* 8: the shadow drifts as the twin does */
-        obs->own_ds += est->s - obs->drift_s;
+        if (obs->options.friction_walk > BS_R(0.0))
+            obs->own_ds += est->s - obs->drift_s; /* 8, the walk */
     } else {
         obs->shadow_s = est->s; /* a state set from outside: the shadow starts again there */
     }
@@ -970,21 +971,26 @@ static void correct_position(bs_observer *obs, bs_sim *sim, bs_real interval)
 }
 
 /* 8: the measured s's rate, low-passed over CLIMB_TIME, while it is
- * measured on the high branch (climb_s < 0: no last value to difference). */
+ * measured on the high branch (climb_s < 0: no last value to difference);
+ * with the walk, its two speeds too. */
 static void follow_climb(bs_observer *obs, bs_real interval)
 {
     const bs_real measured = obs->estimate.s + obs->estimate.s_error;
-    if (obs->climb_s >= BS_R(0.0)) {
-        const bs_real rate = (measured - obs->climb_s) / interval;
+    const bs_real rate = (measured - obs->climb_s) / interval;
+    const int first = obs->climb_s < BS_R(0.0);
+    if (!first)
         obs->climb_rate += interval / CLIMB_TIME * (rate - obs->climb_rate);
+    obs->climb_s = measured;
+    if (!(obs->options.friction_walk > BS_R(0.0)))
+        return; /* the walk's speeds only where it reads them: the others' sample costs no more */
+    if (first) { /* the walk's speeds start again from 0 alike: their ratio holds from the start */
+        obs->walk_rate = obs->own_rate = obs->walk_peak = BS_R(0.0);
+    } else {
         obs->walk_rate += interval / CLIMB_TIME * (rate - obs->walk_rate);
         obs->own_rate += interval / CLIMB_TIME * (obs->own_ds / interval - obs->own_rate);
         if (bs_fabs(obs->walk_rate) > obs->walk_peak)
             obs->walk_peak = bs_fabs(obs->walk_rate);
-    } else { /* the walk's rates start again from 0 alike: their ratio holds from the start */
-        obs->walk_rate = obs->own_rate = obs->walk_peak = BS_R(0.0);
     }
-    obs->climb_s = measured;
     obs->own_ds = BS_R(0.0);
 }
 
