@@ -377,11 +377,17 @@ static bs_real friction_drive(const bs_observer *obs)
 static bs_real friction_sigma(const bs_observer *obs)
 {
     const bs_real prior = friction_prior(obs);
-    const bs_real left = obs->options.friction_walk > BS_R(0.0)
-                             ? obs->sim->k.mu * obs->friction_persist
-                             : obs->sim->scene->mu * friction_drive(obs) / FRICTION_SENSITIVITY;
+    const bs_real left = obs->sim->scene->mu * friction_drive(obs) / FRICTION_SENSITIVITY;
     if (!(obs->options.friction_gain > BS_R(0.0)))
         return BS_R(0.0);
+    return bs_sqrt(prior * prior / (BS_R(1.0) + obs->friction_learnt / FRICTION_LEARN_REF) + left * left);
+}
+
+/* 8, the walk: the same, with what the last relative error read leaves. */
+static bs_real walk_sigma(const bs_observer *obs)
+{
+    const bs_real prior = friction_prior(obs);
+    const bs_real left = obs->sim->k.mu * obs->friction_persist;
     return bs_sqrt(prior * prior / (BS_R(1.0) + obs->friction_learnt / FRICTION_LEARN_REF) + left * left);
 }
 
@@ -971,22 +977,26 @@ static void correct_position(bs_observer *obs, bs_sim *sim, bs_real interval)
 }
 
 /* 8: the measured s's rate, low-passed over CLIMB_TIME, while it is
- * measured on the high branch (climb_s < 0: no last value to difference);
- * with the walk, its two speeds too. */
+ * measured on the high branch (climb_s < 0: no last value to difference). */
 static void follow_climb(bs_observer *obs, bs_real interval)
 {
     const bs_real measured = obs->estimate.s + obs->estimate.s_error;
-    const bs_real rate = (measured - obs->climb_s) / interval;
-    const int first = obs->climb_s < BS_R(0.0);
-    if (!first)
-        obs->climb_rate += interval / CLIMB_TIME * (rate - obs->climb_rate);
+    if (obs->climb_s >= BS_R(0.0))
+        obs->climb_rate += interval / CLIMB_TIME * ((measured - obs->climb_s) / interval - obs->climb_rate);
     obs->climb_s = measured;
-    if (!(obs->options.friction_walk > BS_R(0.0)))
-        return; /* the walk's speeds only where it reads them: the others' sample costs no more */
-    if (first) { /* the walk's speeds start again from 0 alike: their ratio holds from the start */
+}
+
+/* 8, the walk: the measured s's speed and the twin's own, low-passed over
+ * CLIMB_TIME from 0 at the climb's start (climb_s < 0: both start again
+ * alike, so their ratio holds from the first update), and the plant's
+ * fastest of this climb. Before follow_climb, which moves climb_s on. */
+static void follow_walk(bs_observer *obs, bs_real interval)
+{
+    if (obs->climb_s < BS_R(0.0)) {
         obs->walk_rate = obs->own_rate = obs->walk_peak = BS_R(0.0);
     } else {
-        obs->walk_rate += interval / CLIMB_TIME * (rate - obs->walk_rate);
+        const bs_real measured = obs->estimate.s + obs->estimate.s_error;
+        obs->walk_rate += interval / CLIMB_TIME * ((measured - obs->climb_s) / interval - obs->walk_rate);
         obs->own_rate += interval / CLIMB_TIME * (obs->own_ds / interval - obs->own_rate);
         if (bs_fabs(obs->walk_rate) > obs->walk_peak)
             obs->walk_peak = bs_fabs(obs->walk_rate);
@@ -1025,14 +1035,40 @@ static int steady_excitation(bs_observer *obs, bs_real interval)
     return bs_fabs(f - obs->frequency_mean) <= STEADY_FREQUENCY * obs->frequency_mean;
 }
 
-/* 8: mu from the persistent part of the s error, over interval [s]. */
+/* 8: mu^ set on the twin, within (1 +- BS_OBSERVER_FRICTION_RANGE) mu_scene. */
+static void set_mu(bs_observer *obs, bs_sim *sim, bs_real mu)
+{
+    const bs_real mu_scene = sim->scene->mu;
+    const bs_real low = (BS_R(1.0) - (bs_real)BS_OBSERVER_FRICTION_RANGE) * mu_scene;
+    const bs_real high = (BS_R(1.0) + (bs_real)BS_OBSERVER_FRICTION_RANGE) * mu_scene;
+    mu = mu < low ? low : mu > high ? high : mu;
+    (void)bs_sim_set_contact_laws(sim, mu, sim->k.e_n); /* within the range: accepted */
+    obs->estimate.mu = sim->k.mu;
+}
+
+/* 8, the walk: mu^ from the two speeds, over interval [s], where
+ * estimate_friction's gates have let it through (a separate path, so that
+ * the other law's sample costs no more than before the walk). */
+static void learn_walk(bs_observer *obs, bs_sim *sim, bs_real interval)
+{
+    const bs_observer_options *o = &obs->options;
+    const bs_real slowing = BS_R(1.0) + obs->friction_learnt / WALK_LEARN_REF;
+    follow_walk(obs, interval);
+    follow_climb(obs, interval);
+    if (!(bs_fabs(obs->climb_rate) >= o->friction_climb) || !walking(obs))
+        return;
+    obs->friction_persist = walk_error(obs);
+    obs->friction_learnt += interval;
+    set_mu(obs, sim, sim->k.mu * (BS_R(1.0) + o->friction_gain * obs->friction_persist * interval / slowing));
+    obs->estimate.mu_sigma = walk_sigma(obs);
+}
+
+/* 8: mu from the persistent part of the s error (or, with the walk, from
+ * the two speeds: learn_walk), over interval [s]. */
 static void estimate_friction(bs_observer *obs, bs_sim *sim, bs_real interval)
 {
     const bs_observer_options *o = &obs->options;
     const bs_real mu_scene = sim->scene->mu;
-    const bs_real low = (BS_R(1.0) - (bs_real)BS_OBSERVER_FRICTION_RANGE) * mu_scene;
-    const bs_real high = (BS_R(1.0) + (bs_real)BS_OBSERVER_FRICTION_RANGE) * mu_scene;
-    bs_real mu;
     if (!(o->friction_gain > BS_R(0.0)) || !(mu_scene > BS_R(0.0)) || !o->correct_position
         || (bs_real)obs->steps * sim->scene->dt < o->settle_time) {
         obs->climb_s = BS_R(-1.0);
@@ -1053,23 +1089,16 @@ static void estimate_friction(bs_observer *obs, bs_sim *sim, bs_real interval)
     /* ... and there only while the plant climbs: on its plateau the s error
      * the map leaves need not depend on mu, and mu^ would integrate it
      * without end (docs/twin.md, "Friction": where it learns) */
+    if (o->friction_walk > BS_R(0.0)) {
+        learn_walk(obs, sim, interval);
+        return;
+    }
     follow_climb(obs, interval);
     if (!(bs_fabs(obs->climb_rate) >= o->friction_climb))
         return;
-    if (o->friction_walk > BS_R(0.0) && !walking(obs))
-        return;
-    if (o->friction_walk > BS_R(0.0)) {
-        const bs_real slowing = BS_R(1.0) + obs->friction_learnt / WALK_LEARN_REF;
-        obs->friction_persist = walk_error(obs);
-        mu = sim->k.mu * (BS_R(1.0) + o->friction_gain * obs->friction_persist * interval / slowing);
-    } else {
-        obs->friction_persist += interval / o->friction_time * (shadow_error(obs) - obs->friction_persist);
-        mu = sim->k.mu - o->friction_gain * mu_scene * friction_drive(obs) * interval;
-    }
+    obs->friction_persist += interval / o->friction_time * (shadow_error(obs) - obs->friction_persist);
     obs->friction_learnt += interval;
-    mu = mu < low ? low : mu > high ? high : mu;
-    (void)bs_sim_set_contact_laws(sim, mu, sim->k.e_n); /* within the range: accepted */
-    obs->estimate.mu = sim->k.mu;
+    set_mu(obs, sim, sim->k.mu - o->friction_gain * mu_scene * friction_drive(obs) * interval);
     obs->estimate.mu_sigma = friction_sigma(obs);
 }
 
