@@ -3,7 +3,7 @@
 # (docs/twin.md, "Observer" 3-4; issue 30): fig6 for 60 s as `twin-plant`
 # makes it (40 dB noise on both signals, 12 bits, seed 1) and the twin on it,
 # commissioned as the twin report's third twin is (--deadband 0.001
-# --position-gain 3). On the high branch's plateau (t >= 20 s, the twin's
+# --position-gain 10 --position-rate 0.02). On the high branch's plateau (t >= 20 s, the twin's
 # amplitude above 0.7 h) the s the observer measures, s_hat + s_error, has
 # no mean bias beyond 0.0005 against the plant's s (before 0.8.0: +0.0023,
 # +0.0016 of it the lock-in's, +0.0007 the map's). About 10 CPU-s: part of
@@ -20,7 +20,7 @@ check_setup tests/check_twin_bias.sh "$bin"
     >/dev/null 2>"$tmp/e"
 check_status "twin-plant fig6 (60 s) exits 0" 0 $? "$tmp/e"
 "$bin" twin configs/fig6.ini --measured "$tmp/plant.csv" --out "$tmp/est.csv" --every 50 --deadband 0.001 \
-    --position-gain 3 >/dev/null 2>"$tmp/e"
+    --position-gain 10 --position-rate 0.02 >/dev/null 2>"$tmp/e"
 check_status "twin on it exits 0" 0 $? "$tmp/e"
 # t, s_hat, s_sigma, amplitude (columns 1-4), s_true (8), s_error (10)
 awk -F, 'NR > 1 && $1 >= 20 && $4 > 7e-4 {

@@ -34,19 +34,24 @@ REF=${REF:-build/bs-reference}
 BIN=${BIN:-build/double/beamslider}
 # The commissioned twin's map is off by what is left of its frequency error
 # (~0.2 %, ~0.001 in s), not the ~0.01 the default deadband allows for: it
-# corrects s beyond 0.001, at 3 /s (docs/twin.md, "Commissioning"), and holds
-# the s correction for 5 s over a fall from the high branch, whose remnant in
-# the lock-in the low branch's map misreads (docs/twin.md, "Jump hold"). The
-# corrected twin runs the observer's defaults. Either can be changed (e.g.
-# COMMISSIONED= for the defaults) to compare one plant (--plant) both ways.
-COMMISSIONED_DEFAULT="--deadband 0.001 --position-gain 3 --jump-hold 5"
+# corrects s beyond 0.001 (docs/twin.md, "Commissioning"), at 10 /s with the
+# correction's rate capped at 0.02 /s (docs/twin.md, "The per-plant gap,
+# measured again"), and holds the s correction for 5 s over a fall from the
+# high branch, whose remnant in the lock-in the low branch's map misreads
+# (docs/twin.md, "Jump hold"). The corrected twin runs the observer's
+# defaults. Either can be changed (e.g. COMMISSIONED= for the defaults) to
+# compare one plant (--plant) both ways.
+COMMISSIONED_DEFAULT="--deadband 0.001 --position-gain 10 --position-rate 0.02 --jump-hold 5"
 COMMISSIONED=${COMMISSIONED-$COMMISSIONED_DEFAULT}
 CORRECTED=${CORRECTED-}
 # Two more twins, both commissioned as above: "ceiling", told the plant's
 # true mu and e_N (bs_sim_set_contact_laws: the best a friction estimate can
 # do), and "estimating", which estimates mu as it runs (docs/twin.md,
-# "Friction"; --estimate-friction at this gain).
-FRICTION_GAIN=${FRICTION_GAIN:-50}
+# "Friction"; --estimate-friction at this gain), from the climb's speed, which
+# goes as mu^-FRICTION_WALK ("The walk"; FRICTION_WALK=0: the law of "The
+# law" instead, whose gain was 50).
+FRICTION_GAIN=${FRICTION_GAIN:-1.5}
+FRICTION_WALK=${FRICTION_WALK:-4}
 # Both have response maps made at MAP_FRICTIONS, which the observer
 # interpolates at the twin's mu (--map-frictions; docs/twin.md "Friction",
 # "Maps that follow mu"): by default the scene's mu and 25 % either side, the
@@ -200,7 +205,7 @@ twins() {
         --restitution "$en_p" > "$tmp/${name}_$seed.ceil.json"
     "$BIN" twin "$w/twin_c.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.mu" --s0 0.35 --every 50 \
         --noise "$noise" $COMMISSIONED ${MAP_FRICTIONS:+--map-frictions "$MAP_FRICTIONS"} \
-        --estimate-friction "$FRICTION_GAIN" > "$tmp/${name}_$seed.mu.json"
+        --estimate-friction "$FRICTION_GAIN" --friction-walk "$FRICTION_WALK" > "$tmp/${name}_$seed.mu.json"
     if [ "${CEILING_MAPS:-0}" = 1 ]; then # the ceiling with its maps designed at the plant's mu and e_N too
         { cat "$w/twin_c.ini"; printf '[contact]\nfriction = %s\nrestitution = %s\n' "$mu_p" "$en_p"; } > "$w/twin_m.ini"
         "$BIN" twin "$w/twin_m.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.maps" --s0 0.35 --every 50 \
@@ -579,8 +584,8 @@ version=$("$BIN" --version | head -1)
 # what the commissioning flags do: said of the default, named against it otherwise
 if [ "$COMMISSIONED" = "$COMMISSIONED_DEFAULT" ]; then
     commissioned_why=': an s error beyond 0.001 corrected
-at 3 /s, where the defaults leave 0.004 at 1 /s for a model that may be 3 %
-off; no s correction for 5 s over a fall from the high branch, "Jump hold"'
+at 10 /s, its rate capped at 0.02 /s, where the defaults leave 0.004 at 1 /s for a model that
+may be 3 % off; no s correction for 5 s over a fall from the high branch, "Jump hold"'
 else
     commissioned_why=", not the report's \`$COMMISSIONED_DEFAULT\`"
 fi
@@ -624,7 +629,7 @@ are commissioned the same way: the **ceiling**, told the plant's drawn mu and
 e_N (\`--friction MU --restitution E\`: bs_sim_set_contact_laws on the running
 twin), the best a friction estimate can do,
 and the **estimating** twin, which estimates mu while it runs (\`--estimate-friction
-$FRICTION_GAIN\`, docs/twin.md "Friction"). $(if [ -n "$MAP_FRICTIONS" ]; then
+$FRICTION_GAIN --friction-walk $FRICTION_WALK\`, docs/twin.md "Friction"$(if [ "$FRICTION_WALK" != 0 ]; then echo ', "The walk"'; fi)). $(if [ -n "$MAP_FRICTIONS" ]; then
 echo "Both have response maps made at mu = $MAP_FRICTIONS, which follow the twin's mu (\`--map-frictions\`); the"
 echo "other twins the scene's maps at its mu."; else echo "Every twin's maps are the scene's, at its mu."; fi)
 Statistics pooled over the plants after 5 s.
