@@ -374,21 +374,20 @@ static bs_real friction_drive(const bs_observer *obs)
     return p > band ? p - band : p < -band ? p + band : BS_R(0.0);
 }
 
-static bs_real friction_sigma(const bs_observer *obs)
+/* 8: mu_sigma, the prior shrunk by the time spent learning, and left, the
+ * error in mu that the last reading leaves. */
+static bs_real sigma_of(const bs_observer *obs, bs_real left)
 {
     const bs_real prior = friction_prior(obs);
-    const bs_real left = obs->sim->scene->mu * friction_drive(obs) / FRICTION_SENSITIVITY;
-    if (!(obs->options.friction_gain > BS_R(0.0)))
-        return BS_R(0.0);
     return bs_sqrt(prior * prior / (BS_R(1.0) + obs->friction_learnt / FRICTION_LEARN_REF) + left * left);
 }
 
-/* 8, the walk: the same, with what the last relative error read leaves. */
-static bs_real walk_sigma(const bs_observer *obs)
+/* 8: mu_sigma of the law, left the persistent s error beyond the deadband. */
+static bs_real friction_sigma(const bs_observer *obs)
 {
-    const bs_real prior = friction_prior(obs);
-    const bs_real left = obs->sim->k.mu * obs->friction_persist;
-    return bs_sqrt(prior * prior / (BS_R(1.0) + obs->friction_learnt / FRICTION_LEARN_REF) + left * left);
+    if (!(obs->options.friction_gain > BS_R(0.0)))
+        return BS_R(0.0);
+    return sigma_of(obs, obs->sim->scene->mu * friction_drive(obs) / FRICTION_SENSITIVITY);
 }
 
 bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer_size, size_t gains_size,
@@ -978,9 +977,8 @@ static void correct_position(bs_observer *obs, bs_sim *sim, bs_real interval)
 
 /* 8: the measured s's rate, low-passed over CLIMB_TIME, while it is
  * measured on the high branch (climb_s < 0: no last value to difference). */
-static void follow_climb(bs_observer *obs, bs_real interval)
+static void follow_climb(bs_observer *obs, bs_real measured, bs_real interval)
 {
-    const bs_real measured = obs->estimate.s + obs->estimate.s_error;
     if (obs->climb_s >= BS_R(0.0))
         obs->climb_rate += interval / CLIMB_TIME * ((measured - obs->climb_s) / interval - obs->climb_rate);
     obs->climb_s = measured;
@@ -990,12 +988,11 @@ static void follow_climb(bs_observer *obs, bs_real interval)
  * CLIMB_TIME from 0 at the climb's start (climb_s < 0: both start again
  * alike, so their ratio holds from the first update), and the plant's
  * fastest of this climb. Before follow_climb, which moves climb_s on. */
-static void follow_walk(bs_observer *obs, bs_real interval)
+static void follow_walk(bs_observer *obs, bs_real measured, bs_real interval)
 {
     if (obs->climb_s < BS_R(0.0)) {
         obs->walk_rate = obs->own_rate = obs->walk_peak = BS_R(0.0);
     } else {
-        const bs_real measured = obs->estimate.s + obs->estimate.s_error;
         obs->walk_rate += interval / CLIMB_TIME * ((measured - obs->climb_s) / interval - obs->walk_rate);
         obs->own_rate += interval / CLIMB_TIME * (obs->own_ds / interval - obs->own_rate);
         if (bs_fabs(obs->walk_rate) > obs->walk_peak)
@@ -1053,14 +1050,15 @@ static void learn_walk(bs_observer *obs, bs_sim *sim, bs_real interval)
 {
     const bs_observer_options *o = &obs->options;
     const bs_real slowing = BS_R(1.0) + obs->friction_learnt / WALK_LEARN_REF;
-    follow_walk(obs, interval);
-    follow_climb(obs, interval);
+    const bs_real measured = obs->estimate.s + obs->estimate.s_error;
+    follow_walk(obs, measured, interval);
+    follow_climb(obs, measured, interval);
     if (!(bs_fabs(obs->climb_rate) >= o->friction_climb) || !walking(obs))
         return;
     obs->friction_persist = walk_error(obs);
     obs->friction_learnt += interval;
     set_mu(obs, sim, sim->k.mu * (BS_R(1.0) + o->friction_gain * obs->friction_persist * interval / slowing));
-    obs->estimate.mu_sigma = walk_sigma(obs);
+    obs->estimate.mu_sigma = sigma_of(obs, sim->k.mu * obs->friction_persist);
 }
 
 /* 8: mu from the persistent part of the s error (or, with the walk, from
@@ -1093,7 +1091,7 @@ static void estimate_friction(bs_observer *obs, bs_sim *sim, bs_real interval)
         learn_walk(obs, sim, interval);
         return;
     }
-    follow_climb(obs, interval);
+    follow_climb(obs, obs->estimate.s + obs->estimate.s_error, interval);
     if (!(bs_fabs(obs->climb_rate) >= o->friction_climb))
         return;
     obs->friction_persist += interval / o->friction_time * (shadow_error(obs) - obs->friction_persist);
