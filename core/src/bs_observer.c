@@ -374,20 +374,21 @@ static bs_real friction_drive(const bs_observer *obs)
     return p > band ? p - band : p < -band ? p + band : BS_R(0.0);
 }
 
-/* 8: mu_sigma, the prior shrunk by the time spent learning, and left, the
- * error in mu that the last reading leaves. */
-static bs_real sigma_of(const bs_observer *obs, bs_real left)
+/* 8: mu_sigma, formed where it is read (bs_observer_get, _get_friction: a
+ * square root and two divisions saved at each update of mu^; what it reads
+ * changes only there): the prior shrunk by the time spent learning, and the
+ * error in mu that the last reading leaves, the law's persistent s error
+ * beyond its deadband or the walk's relative error. */
+static bs_real mu_sigma_of(const bs_observer *obs)
 {
+    const bs_observer_options *o = &obs->options;
     const bs_real prior = friction_prior(obs);
-    return bs_sqrt(prior * prior / (BS_R(1.0) + obs->friction_learnt / FRICTION_LEARN_REF) + left * left);
-}
-
-/* 8: mu_sigma of the law, left the persistent s error beyond the deadband. */
-static bs_real friction_sigma(const bs_observer *obs)
-{
-    if (!(obs->options.friction_gain > BS_R(0.0)))
+    bs_real left;
+    if (!(o->friction_gain > BS_R(0.0)))
         return BS_R(0.0);
-    return sigma_of(obs, obs->sim->scene->mu * friction_drive(obs) / FRICTION_SENSITIVITY);
+    left = o->friction_walk > BS_R(0.0) ? obs->estimate.mu * obs->friction_persist
+                                        : obs->sim->scene->mu * friction_drive(obs) / FRICTION_SENSITIVITY;
+    return bs_sqrt(prior * prior / (BS_R(1.0) + obs->friction_learnt / FRICTION_LEARN_REF) + left * left);
 }
 
 bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer_size, size_t gains_size,
@@ -490,9 +491,8 @@ bs_status bs_observer_init_(uint32_t tag, uint32_t observer_tag, size_t observer
     obs->estimate.innovation = BS_R(0.0);
     obs->estimate.outliers = 0;
     obs->estimate.mu = sim->k.mu;
-    obs->estimate.mu_sigma = BS_R(0.0);
+    obs->estimate.mu_sigma = BS_R(0.0); /* formed where it is read: mu_sigma_of */
     obs->ready = OBSERVER_READY;
-    obs->estimate.mu_sigma = friction_sigma(obs);
     return BS_OK;
 }
 
@@ -1058,7 +1058,6 @@ static void learn_walk(bs_observer *obs, bs_sim *sim, bs_real interval)
     obs->friction_persist = walk_error(obs);
     obs->friction_learnt += interval;
     set_mu(obs, sim, sim->k.mu * (BS_R(1.0) + o->friction_gain * obs->friction_persist * interval / slowing));
-    obs->estimate.mu_sigma = sigma_of(obs, sim->k.mu * obs->friction_persist);
 }
 
 /* 8: mu from the persistent part of the s error (or, with the walk, from
@@ -1097,7 +1096,6 @@ static void estimate_friction(bs_observer *obs, bs_sim *sim, bs_real interval)
     obs->friction_persist += interval / o->friction_time * (shadow_error(obs) - obs->friction_persist);
     obs->friction_learnt += interval;
     set_mu(obs, sim, sim->k.mu - o->friction_gain * mu_scene * friction_drive(obs) * interval);
-    obs->estimate.mu_sigma = friction_sigma(obs);
 }
 
 /* The guard of every call that changes the twin: an observer made by
@@ -1218,7 +1216,7 @@ bs_status bs_observer_get(const bs_observer *obs, bs_observer_estimate *estimate
     estimate->prediction = obs->estimate.prediction;
     estimate->innovation = obs->estimate.innovation;
     estimate->mu = obs->estimate.mu;
-    estimate->mu_sigma = obs->estimate.mu_sigma;
+    estimate->mu_sigma = mu_sigma_of(obs);
     {
         const bs_real noise_sq = obs->gains->noise * obs->gains->noise;
         const bs_real held = obs->options.lockin_time / obs->sim->scene->dt; /* steps the flag stays */
@@ -1239,7 +1237,7 @@ bs_status bs_observer_get_friction(const bs_observer *obs, bs_real *mu, bs_real 
         return BS_E_UNINITIALISED;
     *mu = obs->estimate.mu;
     if (mu_sigma)
-        *mu_sigma = obs->estimate.mu_sigma;
+        *mu_sigma = mu_sigma_of(obs);
     return BS_OK;
 }
 
@@ -1267,6 +1265,5 @@ bs_status bs_observer_set_friction(bs_observer *obs, bs_sim *sim, bs_real mu, bs
     obs->climb_s = BS_R(-1.0);
     obs->climb_rate = BS_R(0.0);
     obs->estimate.mu = sim->k.mu;
-    obs->estimate.mu_sigma = friction_sigma(obs);
     return BS_OK;
 }
