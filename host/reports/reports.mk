@@ -17,6 +17,8 @@
 #   make twin-fast      the first fig6 plants with the twin at 2e-5 s and at 3.125e-5 s
 #                       prewarped (the step that keeps pace on a 168 MHz M4F) ->
 #                       docs/twin.md, "The twin at a coarser step"
+#   make twin-walk-cost the walk's cost on the Cortex-M4F (pessimistic cycles a sample:
+#                       host/reports/friction_cost.sh) -> docs/twin.md, "The walk"
 #   make harvester-report  harvested power over a load sweep, self-tuning under
 #                       electrical damping, a moving ambient frequency -> docs/harvester.md
 #   make baseline-check [BASELINE=COMMIT|this] [THIS_ARGS='run options'] [OUT=docs/x.md] [TOLERANCE=2]
@@ -35,7 +37,7 @@
 #
 # `make test` also runs sweep-check (host/reports/figures/check_sweep.sh).
 
-.PHONY: fig6-report accuracy stability bench baseline-check harvester-report twin-report twin-ceiling-maps twin-step twin-fast figures \
+.PHONY: fig6-report accuracy stability bench baseline-check harvester-report twin-report twin-ceiling-maps twin-step twin-fast twin-walk-cost figures \
         sweep-check deps-figures \
         provenance-builds
 
@@ -116,6 +118,18 @@ figures: deps-figures
 maps: deps-figures
 	$(MAKE) --no-print-directory REAL=double $(BUILD)/double/beamslider
 	BIN=$(BUILD)/double/beamslider DIR=$(BUILD)/maps/mssp2023 $(if $(JOBS),JOBS=$(JOBS)) sh host/reports/maps_report.sh
+
+# The walk's cost, as make twin-friction-cost counts the law's (tests/embedded/twin.mk):
+# the twin firmware on the 1 s fig6 stream with the walk (k = 4) running at every update,
+# its gates open, at a gain (1e-30 /s) that leaves mu, and so the trajectory, as without
+# it: mu (1 + gain e dt) rounds to mu in float. Here rather than beside the law's image,
+# whose makefile is among the sources of docs/embedded.md's step report.
+$(call twin_image,twin-cost-friction-walk,cortex-m4f,fig6,float,fig6-1s,sim,$(TWIN_COST_FLAGS) -DTWIN_FRICTION_GAIN=1e-30 \
+    -DTWIN_FRICTION_WALK=4 -DTWIN_FRICTION_SIGMA=1.5 -DTWIN_FRICTION_AMPLITUDE=0 -DTWIN_FRICTION_CLIMB=0)
+twin-walk-cost: $(if $(CM_TOOLS_OK),$(call cm_elf,twin-cost-friction-off,cortex-m4f) \
+        $(call cm_elf,twin-cost-friction-walk,cortex-m4f) $(TWIN_DIR)/fig6-1s.stream)
+	$(if $(CM_TOOLS_OK),@sh host/reports/friction_cost.sh $(call cm_elf,twin-cost-friction-off,cortex-m4f) \
+	    $(call cm_elf,twin-cost-friction-walk,cortex-m4f),@echo "$(CM_TOOLS_MSG)")
 
 deps-figures:
 	@sh host/deps.sh gnuplot-nox

@@ -24,7 +24,9 @@
  * TWIN_FRICTION_AMPLITUDE, TWIN_FRICTION_CLIMB and TWIN_FRICTION_DEADBAND (its gates and
  * deadband; a cost image opens the gates and widens the deadband so that
  * the estimate runs every update without changing mu, and so the
- * trajectory: docs/twin.md, "Friction"), and those
+ * trajectory: docs/twin.md, "Friction"), TWIN_FRICTION_WALK (friction_walk:
+ * the walk's cost image runs it at a gain too small to move mu: "The
+ * walk"), and those
  * of the clock (twin_clock_*.c). The gains come
  * from twin_gains.h on the include path: `beamslider twin-gains SCENE.ini
  * --noise SIGMA --name twin_gains > twin_gains.h`.
@@ -67,6 +69,9 @@
 #endif
 #ifndef TWIN_FRICTION_DEADBAND
 #define TWIN_FRICTION_DEADBAND BS_OBSERVER_DEFAULT_FRICTION_DEADBAND
+#endif
+#ifndef TWIN_FRICTION_WALK
+#define TWIN_FRICTION_WALK BS_OBSERVER_DEFAULT_FRICTION_WALK
 #endif
 
 static bs_sim twin;
@@ -222,6 +227,7 @@ static bs_status start(const bs_scene *scene, const bs_observer_gains *gains)
     options.friction_amplitude = (bs_real)TWIN_FRICTION_AMPLITUDE;
     options.friction_climb = (bs_real)TWIN_FRICTION_CLIMB;
     options.friction_deadband = (bs_real)TWIN_FRICTION_DEADBAND;
+    options.friction_walk = (bs_real)TWIN_FRICTION_WALK;
     solver.max_sweeps = BS_SCENE_SOLVER_MAX_SWEEPS;
     solver.tol_rel = BS_SCENE_SOLVER_TOL_REL;
     solver.tol_abs = BS_SCENE_SOLVER_TOL_ABS;
