@@ -18,7 +18,7 @@
 #                       prewarped (the step that keeps pace on a 168 MHz M4F) ->
 #                       docs/twin.md, "The twin at a coarser step"
 #   make twin-walk-cost the walk's cost on the Cortex-M4F (pessimistic cycles a sample:
-#                       host/reports/friction_cost.sh) -> docs/twin.md, "The walk"
+#                       host/reports/friction_cost.sh) -> docs/twin.md, "Cost"
 #   make harvester-report  harvested power over a load sweep, self-tuning under
 #                       electrical damping, a moving ambient frequency -> docs/harvester.md
 #   make baseline-check [BASELINE=COMMIT|this] [THIS_ARGS='run options'] [OUT=docs/x.md] [TOLERANCE=2]
