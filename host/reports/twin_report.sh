@@ -49,9 +49,14 @@ CORRECTED=${CORRECTED-}
 # do), and "estimating", which estimates mu as it runs (docs/twin.md,
 # "Friction"; --estimate-friction at this gain), from the climb's speed, which
 # goes as mu^-FRICTION_WALK ("The walk"; FRICTION_WALK=0: the law of "The
-# law" instead, whose gain was 50).
+# law" instead, whose gain was 50). It learns while s_sigma is below
+# FRICTION_SIGMA (--friction-sigma): the walk reads the rate of the measured
+# s, which a map error steady over the climb leaves alone, so it may start
+# earlier in the climb than the observer's default (0.002) lets the law
+# (docs/twin.md, "Learning sooner").
 FRICTION_GAIN=${FRICTION_GAIN:-1.5}
 FRICTION_WALK=${FRICTION_WALK:-4}
+FRICTION_SIGMA=${FRICTION_SIGMA:-0.003}
 # Both have response maps made at MAP_FRICTIONS, which the observer
 # interpolates at the twin's mu (--map-frictions; docs/twin.md "Friction",
 # "Maps that follow mu"): by default the scene's mu and 25 % either side, the
@@ -205,7 +210,8 @@ twins() {
         --restitution "$en_p" > "$tmp/${name}_$seed.ceil.json"
     "$BIN" twin "$w/twin_c.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.mu" --s0 0.35 --every 50 \
         --noise "$noise" $COMMISSIONED ${MAP_FRICTIONS:+--map-frictions "$MAP_FRICTIONS"} \
-        --estimate-friction "$FRICTION_GAIN" --friction-walk "$FRICTION_WALK" > "$tmp/${name}_$seed.mu.json"
+        --estimate-friction "$FRICTION_GAIN" --friction-walk "$FRICTION_WALK" --friction-sigma "$FRICTION_SIGMA" \
+        > "$tmp/${name}_$seed.mu.json"
     if [ "${CEILING_MAPS:-0}" = 1 ]; then # the ceiling with its maps designed at the plant's mu and e_N too
         { cat "$w/twin_c.ini"; printf '[contact]\nfriction = %s\nrestitution = %s\n' "$mu_p" "$en_p"; } > "$w/twin_m.ini"
         "$BIN" twin "$w/twin_m.ini" --measured "$w/measured.csv" --out "$tmp/${name}_$seed.maps" --s0 0.35 --every 50 \
@@ -629,7 +635,7 @@ are commissioned the same way: the **ceiling**, told the plant's drawn mu and
 e_N (\`--friction MU --restitution E\`: bs_sim_set_contact_laws on the running
 twin), the best a friction estimate can do,
 and the **estimating** twin, which estimates mu while it runs (\`--estimate-friction
-$FRICTION_GAIN --friction-walk $FRICTION_WALK\`, docs/twin.md "Friction"$(if [ "$FRICTION_WALK" != 0 ]; then echo ', "The walk"'; fi)). $(if [ -n "$MAP_FRICTIONS" ]; then
+$FRICTION_GAIN --friction-walk $FRICTION_WALK --friction-sigma $FRICTION_SIGMA\`, docs/twin.md "Friction"$(if [ "$FRICTION_WALK" != 0 ]; then echo ', "The walk"'; fi)). $(if [ -n "$MAP_FRICTIONS" ]; then
 echo "Both have response maps made at mu = $MAP_FRICTIONS, which follow the twin's mu (\`--map-frictions\`); the"
 echo "other twins the scene's maps at its mu."; else echo "Every twin's maps are the scene's, at its mu."; fi)
 Statistics pooled over the plants after 5 s.
