@@ -52,11 +52,11 @@ CORRECTED=${CORRECTED-}
 # law" instead, whose gain was 50). It learns while s_sigma is below
 # FRICTION_SIGMA (--friction-sigma): the walk reads the rate of the measured
 # s, which a map error steady over the climb leaves alone, so it may start
-# earlier in the climb than the observer's default (0.002) lets the law
-# (docs/twin.md, "Learning sooner").
+# earlier in the climb than the observer's default, 0.002, which the law
+# keeps (docs/twin.md, "Learning sooner").
 FRICTION_GAIN=${FRICTION_GAIN:-1.5}
 FRICTION_WALK=${FRICTION_WALK:-4}
-FRICTION_SIGMA=${FRICTION_SIGMA:-0.003}
+if [ "$FRICTION_WALK" = 0 ]; then FRICTION_SIGMA=${FRICTION_SIGMA:-0.002}; else FRICTION_SIGMA=${FRICTION_SIGMA:-0.003}; fi
 # Both have response maps made at MAP_FRICTIONS, which the observer
 # interpolates at the twin's mu (--map-frictions; docs/twin.md "Friction",
 # "Maps that follow mu"): by default the scene's mu and 25 % either side, the
