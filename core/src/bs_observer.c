@@ -976,24 +976,29 @@ static void correct_position(bs_observer *obs, bs_sim *sim, bs_real interval)
 }
 
 /* 8: the measured s's rate, low-passed over CLIMB_TIME, while it is
- * measured on the high branch (climb_s < 0: no last value to difference). */
-static void follow_climb(bs_observer *obs, bs_real measured, bs_real interval)
+ * measured on the high branch (climb_s < 0: no last value to difference).
+ * Whether it had one, and the rate it read into *rate if so. */
+static int follow_climb(bs_observer *obs, bs_real measured, bs_real interval, bs_real *rate)
 {
-    if (obs->climb_s >= BS_R(0.0))
-        obs->climb_rate += interval / CLIMB_TIME * ((measured - obs->climb_s) / interval - obs->climb_rate);
+    const int started = obs->climb_s >= BS_R(0.0);
+    if (started) {
+        *rate = (measured - obs->climb_s) / interval;
+        obs->climb_rate += interval / CLIMB_TIME * (*rate - obs->climb_rate);
+    }
     obs->climb_s = measured;
+    return started;
 }
 
-/* 8, the walk: the measured s's speed and the twin's own, low-passed over
- * CLIMB_TIME from 0 at the climb's start (climb_s < 0: both start again
- * alike, so their ratio holds from the first update), and the plant's
- * fastest of this climb. Before follow_climb, which moves climb_s on. */
-static void follow_walk(bs_observer *obs, bs_real measured, bs_real interval)
+/* 8, the walk: the measured s's speed (rate, as follow_climb read it) and
+ * the twin's own, low-passed over CLIMB_TIME from 0 at the climb's start
+ * (started 0: both start again alike, so their ratio holds from the first
+ * update), and the plant's fastest of this climb. */
+static void follow_walk(bs_observer *obs, int started, bs_real rate, bs_real interval)
 {
-    if (obs->climb_s < BS_R(0.0)) {
+    if (!started) {
         obs->walk_rate = obs->own_rate = obs->walk_peak = BS_R(0.0);
     } else {
-        obs->walk_rate += interval / CLIMB_TIME * ((measured - obs->climb_s) / interval - obs->walk_rate);
+        obs->walk_rate += interval / CLIMB_TIME * (rate - obs->walk_rate);
         obs->own_rate += interval / CLIMB_TIME * (obs->own_ds / interval - obs->own_rate);
         if (bs_fabs(obs->walk_rate) > obs->walk_peak)
             obs->walk_peak = bs_fabs(obs->walk_rate);
@@ -1050,9 +1055,9 @@ static void learn_walk(bs_observer *obs, bs_sim *sim, bs_real interval)
 {
     const bs_observer_options *o = &obs->options;
     const bs_real slowing = BS_R(1.0) + obs->friction_learnt / WALK_LEARN_REF;
-    const bs_real measured = obs->estimate.s + obs->estimate.s_error;
-    follow_walk(obs, measured, interval);
-    follow_climb(obs, measured, interval);
+    bs_real rate = BS_R(0.0);
+    const int started = follow_climb(obs, obs->estimate.s + obs->estimate.s_error, interval, &rate);
+    follow_walk(obs, started, rate, interval);
     if (!(bs_fabs(obs->climb_rate) >= o->friction_climb) || !walking(obs))
         return;
     obs->friction_persist = walk_error(obs);
@@ -1090,7 +1095,8 @@ static void estimate_friction(bs_observer *obs, bs_sim *sim, bs_real interval)
         learn_walk(obs, sim, interval);
         return;
     }
-    follow_climb(obs, obs->estimate.s + obs->estimate.s_error, interval);
+    bs_real rate; /* the law reads the low-passed climb_rate alone */
+    (void)follow_climb(obs, obs->estimate.s + obs->estimate.s_error, interval, &rate);
     if (!(bs_fabs(obs->climb_rate) >= o->friction_climb))
         return;
     obs->friction_persist += interval / o->friction_time * (shadow_error(obs) - obs->friction_persist);
