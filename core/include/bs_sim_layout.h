@@ -51,6 +51,7 @@ typedef struct bs_contact_set {
 typedef struct bs_shape_cache {
     bs_real centre;                    /* x of the expansion [m]; below 0: empty */
     bs_real coef[BS_MAX_MODES][BS_SHAPE_TERMS]; /* phi_k = sum_m coef[k][m] t^m, t in the pieces' local units */
+    int on_beam;                       /* 1: every x within its reach is on the beam, in [0, L] */
 } bs_shape_cache;
 
 /* What every step reads, prepared once from the scene (core/src/bs_prepare.c)

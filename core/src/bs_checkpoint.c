@@ -21,6 +21,7 @@
 #include "beamslider.h"
 #include "bs_scene_fields.h"
 #include "bs_port.h"
+#include "bs_shape.h"
 #include "bs_sim_internal.h"
 
 #define CHECKPOINT_MAGIC 0x50435342u /* "BSCP" read as a little-endian u32 */
@@ -221,6 +222,8 @@ static void load_state(bs_sim *sim, const saved_state *s)
     copy_reals(&sim->percussion[0][0], &s->percussion[0][0], BS_MAX_CONTACTS * BS_ROWS);
     copy_cache(&sim->side[0], &s->side[0]);
     copy_cache(&sim->side[1], &s->side[1]);
+    sim->side[0].on_beam = bs_shape_on_beam(sim->scene, sim->side[0].centre); /* not in the file: its centre's */
+    sim->side[1].on_beam = bs_shape_on_beam(sim->scene, sim->side[1].centre);
 #if BS_WITH_PIEZO
     sim->voltage = s->piezo[0];
     sim->storage_voltage = s->piezo[1];

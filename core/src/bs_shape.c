@@ -147,6 +147,16 @@ bs_real bs_shape_reach(const bs_scene *scene)
 void bs_shape_forget(bs_shape_cache *cache)
 {
     cache->centre = BS_R(-1.0);
+    cache->on_beam = 0;
+}
+
+/* Twice the farthest reach (BS_SHAPE_REACH, in units of 2 per piece) on
+ * either side of the centre, so that a point that rounding puts within an
+ * expansion's reach is on the beam with a wide margin; NaN is not. */
+int bs_shape_on_beam(const bs_scene *scene, bs_real centre)
+{
+    const bs_real margin = BS_SHAPE_REACH / scene->shape_scale;
+    return centre - margin >= BS_R(0.0) && centre + margin <= scene->length;
 }
 
 /* Taylor shift by repeated synthetic division: with b = a, the passes
@@ -181,4 +191,5 @@ void bs_shape_expand(const bs_scene *scene, bs_real x, bs_shape_cache *cache)
     /* the centre in the pieces' own coordinate, so that offsets are exact
      * from where the coefficients were taken */
     cache->centre = ((bs_real)j + BS_R(0.5) * (u0 + BS_R(1.0))) / scale;
+    cache->on_beam = bs_shape_on_beam(scene, cache->centre);
 }

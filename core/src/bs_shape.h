@@ -101,4 +101,9 @@ BS_INLINE void bs_shape_expanded(int n, const bs_shape_cache *cache, bs_real t, 
 /* Marks the cache empty: the next use expands it. */
 void bs_shape_forget(bs_shape_cache *cache);
 
+/* 1 if every x within the reach of an expansion about centre is on the
+ * beam (cache->on_beam, set by bs_shape_expand): the contact detection
+ * then skips the test of each corner. */
+int bs_shape_on_beam(const bs_scene *scene, bs_real centre);
+
 #endif

@@ -149,11 +149,9 @@ static uint32_t estimate_hash(const bs_observer_estimate *estimate)
     return hash;
 }
 
-static void after_step(void)
+/* Takes the report due after this step (once in report_steps). */
+static void take_report(void)
 {
-    ++tally.steps;
-    if (--report_in != 0)
-        return;
     report_in = report_steps;
     pending.due = 1; /* a second report due before the first is printed (a gap over 0.1 s) replaces it */
     pending.tenths = tally.steps / report_steps;
@@ -163,6 +161,16 @@ static void after_step(void)
     pending.lag = fifo.head + pending.dropped - tally.steps;
     pending.hash = bs_sim_hash(&twin);
     pending.estimate_hash = estimate_hash(&pending.estimate);
+}
+
+/* The bookkeeping after every step: inline, its rare part a call (the
+ * whole of it as a call: 23 estimated cycles a sample more, flash;
+ * tests/qemu/twin_probe.sh on twin-cost-friction-off 2592.4 -> 2569.4). */
+static inline void after_step(void)
+{
+    ++tally.steps;
+    if (--report_in == 0)
+        take_report();
 }
 
 /* One sample out of the FIFO: the gap before it, then its observer step. A
