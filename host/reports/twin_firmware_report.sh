@@ -56,21 +56,18 @@ ENTRY=24                        # SysTick entry + return [cycles]
 
 val() { awk -v name="$2" '$1 == name { sub(/^[^ ]+ /, ""); print; found = 1; exit } END { if (!found) print "-" }' "$1"; }
 
-# sizes ELF -> "core_code twin_code scene gains": code generated from the core and from
-# the firmware's own files (code_bytes.sh: by source line, what -flto inlines across them
-# counted where it came from), constants of the scene and the gains (the link map)
-sizes() {
-    awk -f host/reports/link_map_sections.awk "${1%.elf}.map" |
-        awk -v core="$(sh host/reports/code_bytes.sh "$1" /core/src/)" \
-            -v twin="$(sh host/reports/code_bytes.sh "$1" /twin/twin_)" '
-        $1 == ".rodata.bs_compiled_scene" { scene += $2; next }
-        $1 == ".rodata.twin_gains" { gains += $2 }
-        END { printf "%d %d %d %d\n", core, twin, scene, gains }'
-}
 # symbol_size ELF NAME -> bytes (0 if absent)
 symbol_size() {
     arm-none-eabi-nm -S --radix=d "$1" | awk -v name="$2" '$4 == name { print $2 + 0; found = 1; exit }
         END { if (!found) print 0 }'
+}
+# sizes ELF -> "core_code twin_code scene gains": code generated from the core and from
+# the firmware's own files (code_bytes.sh: by source line, what -flto inlines across them
+# counted where it came from), constants of the scene and the gains (their symbols: the
+# images are built without -fdata-sections, so the link map has no section of their own)
+sizes() {
+    echo "$(sh host/reports/code_bytes.sh "$1" /core/src/) $(sh host/reports/code_bytes.sh "$1" /twin/twin_)" \
+        "$(symbol_size "$1" bs_compiled_scene) $(symbol_size "$1" twin_gains)"
 }
 
 n=0
